@@ -1,0 +1,148 @@
+"""Elementary rotations: turning about one coordinate axis.
+
+Everything in eulerlib is built from three matrices. With column vectors, a right-handed
+coordinate system and the right-hand rule for positive angles (thumb along the axis, fingers
+curl the way the rotation goes), an *active* rotation by angle θ moves a vector ``v`` to
+``R v``:
+
+.. math::
+
+    R_x(θ) = \\begin{bmatrix} 1 & 0 & 0 \\\\ 0 & \\cos θ & -\\sin θ \\\\ 0 & \\sin θ & \\cos θ
+    \\end{bmatrix},\\quad
+    R_y(θ) = \\begin{bmatrix} \\cos θ & 0 & \\sin θ \\\\ 0 & 1 & 0 \\\\ -\\sin θ & 0 & \\cos θ
+    \\end{bmatrix},\\quad
+    R_z(θ) = \\begin{bmatrix} \\cos θ & -\\sin θ & 0 \\\\ \\sin θ & \\cos θ & 0 \\\\ 0 & 0 & 1
+    \\end{bmatrix}.
+
+Read each matrix by its columns: column ``j`` is where the basis vector ``e_j`` lands. A
+quarter turn about z sends x to y and y to −x, which is the first two columns of ``R_z(90°)``.
+(The *passive* reading, re-expressing a fixed vector in turned axes, uses the transpose.)
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from eulerlib._trig import sin_cos
+from eulerlib._validation import as_float_array
+
+__all__ = ["elementary_rotation", "rot_x", "rot_y", "rot_z"]
+
+
+def elementary_rotation(
+    axis: int, angle: ArrayLike, *, degrees: bool = False
+) -> NDArray[np.float64]:
+    """Active right-handed rotation about coordinate axis ``axis`` (0 = x, 1 = y, 2 = z).
+
+    Parameters
+    ----------
+    axis : int
+        0, 1 or 2 for x, y or z.
+    angle : array_like, shape (...)
+        Rotation angle(s), in radians unless ``degrees`` is true.
+    degrees : bool, optional
+        Read ``angle`` in degrees. Multiples of 90° then give exact zeros and ones.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+        One matrix per angle.
+
+    Raises
+    ------
+    TypeError
+        If ``angle`` is not numeric.
+    ValueError
+        If ``axis`` is not 0, 1 or 2, or ``angle`` is NaN or infinite.
+
+    Examples
+    --------
+    >>> elementary_rotation(2, 90, degrees=True)
+    array([[ 0., -1.,  0.],
+           [ 1.,  0.,  0.],
+           [ 0.,  0.,  1.]])
+    """
+    if axis not in (0, 1, 2):
+        raise ValueError(f"axis must be 0 (x), 1 (y) or 2 (z), got {axis!r}")
+    theta = as_float_array(angle, "angle")
+    s, c = sin_cos(theta, degrees)
+    i, j = (axis + 1) % 3, (axis + 2) % 3
+    R = np.zeros((*theta.shape, 3, 3))
+    R[..., axis, axis] = 1.0
+    R[..., i, i] = c
+    R[..., j, j] = c
+    R[..., i, j] = -s
+    R[..., j, i] = s
+    return R
+
+
+def rot_x(angle: ArrayLike, *, degrees: bool = False) -> NDArray[np.float64]:
+    """Active right-handed rotation about the x axis (roll in Rose's convention).
+
+    Parameters
+    ----------
+    angle : array_like, shape (...)
+        Rotation angle(s), in radians unless ``degrees`` is true.
+    degrees : bool, optional
+        Read ``angle`` in degrees.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+        ``[[1, 0, 0], [0, cos, -sin], [0, sin, cos]]`` for each angle.
+
+    Examples
+    --------
+    >>> rot_x(90, degrees=True) @ [0.0, 1.0, 0.0]   # y turns into z
+    array([0., 0., 1.])
+    >>> rot_x([0.0, 0.1]).shape
+    (2, 3, 3)
+    """
+    return elementary_rotation(0, angle, degrees=degrees)
+
+
+def rot_y(angle: ArrayLike, *, degrees: bool = False) -> NDArray[np.float64]:
+    """Active right-handed rotation about the y axis (pitch in Rose's convention).
+
+    Parameters
+    ----------
+    angle : array_like, shape (...)
+        Rotation angle(s), in radians unless ``degrees`` is true.
+    degrees : bool, optional
+        Read ``angle`` in degrees.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+        ``[[cos, 0, sin], [0, 1, 0], [-sin, 0, cos]]`` for each angle.
+
+    Examples
+    --------
+    >>> rot_y(90, degrees=True) @ [0.0, 0.0, 1.0]   # z turns into x
+    array([1., 0., 0.])
+    """
+    return elementary_rotation(1, angle, degrees=degrees)
+
+
+def rot_z(angle: ArrayLike, *, degrees: bool = False) -> NDArray[np.float64]:
+    """Active right-handed rotation about the z axis (yaw in Rose's convention).
+
+    Parameters
+    ----------
+    angle : array_like, shape (...)
+        Rotation angle(s), in radians unless ``degrees`` is true.
+    degrees : bool, optional
+        Read ``angle`` in degrees.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+        ``[[cos, -sin, 0], [sin, cos, 0], [0, 0, 1]]`` for each angle.
+
+    Examples
+    --------
+    >>> rot_z(90, degrees=True) @ [1.0, 0.0, 0.0]   # x turns into y
+    array([0., 1., 0.])
+    """
+    return elementary_rotation(2, angle, degrees=degrees)

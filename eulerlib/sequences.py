@@ -1,0 +1,106 @@
+"""Axis sequences: the 24 ways to name an Euler-angle convention with three letters.
+
+A sequence is three letters from ``x``, ``y``, ``z`` with no two neighbours alike, read exactly
+as SciPy's :meth:`scipy.spatial.transform.Rotation.from_euler` reads them:
+
+* **uppercase** (``"ZYX"``) means *intrinsic* rotations: each one turns about an axis of the
+  body, which has already been moved by the rotations before it;
+* **lowercase** (``"xyz"``) means *extrinsic* rotations: each one turns about an axis of the
+  fixed reference frame;
+* angle ``i`` goes with letter ``i``.
+
+Six sequences use three different axes (Tait–Bryan: ``XYZ``, ``XZY``, ``YXZ``, ``YZX``,
+``ZXY``, ``ZYX``), six repeat the first axis at the end (proper Euler: ``XYX``, ``XZX``,
+``YXY``, ``YZY``, ``ZXZ``, ``ZYZ``), and each comes in both cases: 24 conventions.
+
+An intrinsic sequence and the reversed extrinsic sequence with the angles reversed describe
+the same rotation: ``"ZYX"`` with ``(yaw, pitch, roll)`` equals ``"xyz"`` with
+``(roll, pitch, yaw)``. eulerlib uses that fact everywhere, so that both spellings of a
+convention give identical numbers.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+TAIT_BRYAN = ("XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX")
+PROPER_EULER = ("XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ")
+#: All 24 valid sequences: 12 intrinsic (uppercase) then 12 extrinsic (lowercase).
+ALL_SEQUENCES = TAIT_BRYAN + PROPER_EULER + tuple(s.lower() for s in TAIT_BRYAN + PROPER_EULER)
+
+_AXIS_INDEX = {"x": 0, "y": 1, "z": 2}
+
+
+class Sequence(NamedTuple):
+    """A parsed axis sequence.
+
+    Attributes
+    ----------
+    seq : str
+        The sequence as given, for example ``"ZYX"``.
+    axes : tuple of int
+        Axis indices (0 for x, 1 for y, 2 for z) in the order the letters are written.
+    intrinsic : bool
+        True for uppercase (moving axes), False for lowercase (fixed axes).
+    proper : bool
+        True for a proper Euler sequence (first axis repeated), False for Tait–Bryan.
+    """
+
+    seq: str
+    axes: tuple[int, int, int]
+    intrinsic: bool
+    proper: bool
+
+    @property
+    def intrinsic_axes(self) -> tuple[int, int, int]:
+        """Axes of the equivalent intrinsic sequence (reversed when the sequence is extrinsic)."""
+        return self.axes if self.intrinsic else self.axes[::-1]
+
+
+def parse_sequence(seq: object) -> Sequence:
+    """Check an axis sequence and return it parsed.
+
+    Parameters
+    ----------
+    seq : str
+        Three letters from x, y, z, all uppercase (intrinsic) or all lowercase (extrinsic),
+        with no two neighbours alike.
+
+    Returns
+    -------
+    Sequence
+        The axes as indices and whether the sequence is intrinsic and proper.
+
+    Raises
+    ------
+    TypeError
+        If ``seq`` is not a string.
+    ValueError
+        If ``seq`` is not one of the 24 valid sequences; the message lists them.
+
+    Examples
+    --------
+    >>> parse_sequence("ZYX")
+    Sequence(seq='ZYX', axes=(2, 1, 0), intrinsic=True, proper=False)
+    >>> parse_sequence("zxz").proper
+    True
+    """
+    if not isinstance(seq, str):
+        raise TypeError(f"seq must be a string such as 'ZYX', got {type(seq).__name__}")
+    if seq not in ALL_SEQUENCES:
+        if len(seq) != 3:
+            reason = f"it has {len(seq)} characters, not 3"
+        elif not set(seq.lower()) <= set("xyz"):
+            reason = "it uses letters other than x, y, z"
+        elif not (seq.isupper() or seq.islower()):
+            reason = "it mixes uppercase (intrinsic) and lowercase (extrinsic) letters"
+        else:
+            reason = "two neighbouring axes are the same, so two rotations would merge into one"
+        raise ValueError(
+            f"invalid axis sequence {seq!r}: {reason}. Use three letters from x, y, z with no "
+            "two neighbours alike, all uppercase for intrinsic (moving axes) or all lowercase "
+            f"for extrinsic (fixed axes): {', '.join(ALL_SEQUENCES)}"
+        )
+    lower = seq.lower()
+    axes = (_AXIS_INDEX[lower[0]], _AXIS_INDEX[lower[1]], _AXIS_INDEX[lower[2]])
+    return Sequence(seq, axes, seq.isupper(), axes[0] == axes[2])
