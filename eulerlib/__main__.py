@@ -1,0 +1,3 @@
+from eulerlib.cli import main
+
+raise SystemExit(main())
