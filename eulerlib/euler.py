@@ -65,10 +65,11 @@ __all__ = [
 ]
 
 #: A matrix is in gimbal lock when its middle angle is within this many radians of the
-#: singular value (±π/2 for Tait–Bryan, 0 or π for proper Euler). 2⁻⁴⁸ ≈ 3.6e-15 is a few units
-#: in the last place of 1: wide enough to catch a lock matrix that carries ordinary rounding
-#: noise, narrow enough that setting the first angle to 0 changes no entry by more than that.
-GIMBAL_LOCK_TOLERANCE = 2.0**-48
+#: singular value (±π/2 for Tait–Bryan, 0 or π for proper Euler). 2⁻⁴⁹ ≈ 1.8e-15 is eight units
+#: in the last place of 1: about four times the distance that ordinary rounding noise puts
+#: between a lock matrix and the lock (measured on ``Q @ Q.T @ R``), and small enough that
+#: setting the first angle to 0 moves no entry of the rebuilt matrix by more than 2 × 2⁻⁴⁹.
+GIMBAL_LOCK_TOLERANCE = 2.0**-49
 
 
 class GimbalLockWarning(UserWarning):
