@@ -52,7 +52,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._trig import sin_cos
-from eulerlib._validation import ROTATION_ATOL, as_matrices, as_vectors
+from eulerlib._validation import ROTATION_ATOL, as_matrix_entries, as_vectors
 from eulerlib.sequences import Sequence, parse_sequence
 
 __all__ = [
@@ -180,12 +180,15 @@ def euler_to_matrix(
     return R
 
 
-def _relabelled(R: NDArray[np.float64], parsed: Sequence):  # type: ignore[no-untyped-def]
-    """Entry accessor ``m(r, c)`` of ``M = Pᵀ R P`` and the sign of the third axis."""
+def _relabelled(entries: NDArray[np.float64], parsed: Sequence):  # type: ignore[no-untyped-def]
+    """Entry accessor ``m(r, c)`` of ``M = Pᵀ R P`` and the sign of the third axis.
+
+    ``entries`` holds the matrices ``R`` as laid out by ``_validation.matrix_entries``.
+    """
     index, sign = _frame(parsed)
 
     def m(r: int, c: int) -> NDArray[np.float64]:
-        entry = R[..., index[r], index[c]]
+        entry: NDArray[np.float64] = entries[3 * index[r] + index[c]]
         return entry if sign[r] * sign[c] > 0 else -entry
 
     return m, sign[2]
@@ -203,18 +206,19 @@ def _middle(m, proper: bool):  # type: ignore[no-untyped-def]
 
 
 def intrinsic_angles(
-    R: NDArray[np.float64],
+    entries: NDArray[np.float64],
     parsed: Sequence,
     zero: Literal["first", "third"] = "first",
     tolerance: float = GIMBAL_LOCK_TOLERANCE,
 ) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
-    """Angles of the *intrinsic* form of ``parsed`` for validated matrices ``R``.
+    """Angles of the *intrinsic* form of ``parsed`` for validated matrices.
 
+    ``entries`` holds the matrices as laid out by ``_validation.matrix_entries``.
     Returns the angles, shape ``(..., 3)`` in intrinsic order, and the lock mask. At lock the
     angle named by ``zero`` is set to 0 and the other is solved from the matrix; away from lock
     the angle named by ``zero`` comes from its own ratio and the other is solved from it.
     """
-    m, third_sign = _relabelled(R, parsed)
+    m, third_sign = _relabelled(entries, parsed)
     middle, distance = _middle(m, parsed.proper)
     locked = distance <= tolerance
     if parsed.proper:  # M = R_x(a) R_y(b) R_x(c)
@@ -329,8 +333,8 @@ def matrix_to_euler(
     'GimbalLockWarning'
     """
     parsed = parse_sequence(seq)
-    matrices = as_matrices(R, "R", validate=validate, repair=repair, atol=atol)
-    angles, locked = intrinsic_angles(matrices, parsed)
+    entries = as_matrix_entries(R, "R", validate=validate, repair=repair, atol=atol)
+    angles, locked = intrinsic_angles(entries, parsed)
     if not parsed.intrinsic:
         angles = angles[..., ::-1]
     if warn and np.any(locked):
@@ -390,8 +394,8 @@ def gimbal_lock_status(
     array([1., 0.])
     """
     parsed = parse_sequence(seq)
-    matrices = as_matrices(R, "R", validate=validate, repair=repair, atol=atol)
-    m, _ = _relabelled(matrices, parsed)
+    entries = as_matrix_entries(R, "R", validate=validate, repair=repair, atol=atol)
+    m, _ = _relabelled(entries, parsed)
     _, distance = _middle(m, parsed.proper)
     if degrees:
         distance = np.degrees(distance)

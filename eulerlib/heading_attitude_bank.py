@@ -20,7 +20,7 @@ import warnings
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._validation import ROTATION_ATOL, as_float_array, as_matrices
+from eulerlib._validation import ROTATION_ATOL, as_float_array, as_matrix_entries
 from eulerlib.euler import GimbalLockWarning, euler_to_matrix, intrinsic_angles, lock_message
 from eulerlib.sequences import parse_sequence
 
@@ -127,8 +127,8 @@ def matrix_to_heading_attitude_bank(
     >>> print(h, a, b)   # heading + bank = 50° survives; bank is set to 0
     50.0 90.0 0.0
     """
-    matrices = as_matrices(R, "R", validate=validate, repair=repair, atol=atol)
-    angles, locked = intrinsic_angles(matrices, _YZX, zero="third")
+    entries = as_matrix_entries(R, "R", validate=validate, repair=repair, atol=atol)
+    angles, locked = intrinsic_angles(entries, _YZX, zero="third")
     if warn and np.any(locked):
         message = lock_message(_YZX, int(np.count_nonzero(locked)), int(locked.size), 2)
         warnings.warn(message, GimbalLockWarning, stacklevel=2)

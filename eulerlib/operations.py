@@ -18,6 +18,7 @@ from eulerlib._validation import (
     as_matrices,
     as_vectors,
     determinant,
+    matrix_entries,
     orthonormality_error,
 )
 
@@ -218,8 +219,10 @@ def is_rotation_matrix(R: ArrayLike, *, atol: float = ROTATION_ATOL) -> bool | N
     if array.ndim < 2 or array.shape[-2:] != (3, 3):
         raise ValueError(f"R must have shape (..., 3, 3), got shape {array.shape}")
     finite = np.all(np.isfinite(array), axis=(-2, -1))
-    safe = np.where(finite[..., np.newaxis, np.newaxis], array, 0.0)
+    entries = matrix_entries(np.where(finite[..., np.newaxis, np.newaxis], array, 0.0))
     result = (
-        finite & (orthonormality_error(safe) <= atol) & (np.abs(determinant(safe) - 1.0) <= atol)
+        finite
+        & (orthonormality_error(entries) <= atol)
+        & (np.abs(determinant(entries) - 1.0) <= atol)
     )
     return bool(result) if result.ndim == 0 else result

@@ -19,7 +19,7 @@ import warnings
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._validation import ROTATION_ATOL, as_float_array, as_matrices
+from eulerlib._validation import ROTATION_ATOL, as_float_array, as_matrix_entries
 from eulerlib.euler import GimbalLockWarning, euler_to_matrix, intrinsic_angles, lock_message
 from eulerlib.sequences import parse_sequence
 
@@ -124,8 +124,8 @@ def matrix_to_yaw_pitch_roll(
     >>> print(yaw, pitch, roll)
     30.0 20.0 10.0
     """
-    matrices = as_matrices(R, "R", validate=validate, repair=repair, atol=atol)
-    angles, locked = intrinsic_angles(matrices, _ZYX, zero="first")
+    entries = as_matrix_entries(R, "R", validate=validate, repair=repair, atol=atol)
+    angles, locked = intrinsic_angles(entries, _ZYX, zero="first")
     if warn and np.any(locked):
         message = lock_message(_ZYX, int(np.count_nonzero(locked)), int(locked.size), 0)
         warnings.warn(message, GimbalLockWarning, stacklevel=2)
