@@ -1,3 +1,6 @@
+"""Run the command line as ``python -m eulerlib``."""
+
 from eulerlib.cli import main
 
-raise SystemExit(main())
+if __name__ == "__main__":
+    raise SystemExit(main())
