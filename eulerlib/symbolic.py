@@ -76,7 +76,7 @@ _AXIS_NAMES = {"x": 0, "y": 1, "z": 2, 0: 0, 1: 1, 2: 2}
 
 def _axis_index(axis: object) -> int:
     key = axis.lower() if isinstance(axis, str) else axis
-    if isinstance(key, bool) or key not in _AXIS_NAMES:
+    if not isinstance(key, (str, int)) or isinstance(key, bool) or key not in _AXIS_NAMES:
         raise ValueError(f"axis must be 'x', 'y', 'z' or 0, 1, 2, got {axis!r}")
     return _AXIS_NAMES[key]
 
