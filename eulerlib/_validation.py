@@ -30,6 +30,9 @@ def as_float_array(value: ArrayLike, name: str) -> NDArray[np.float64]:
     if array.dtype.kind not in "iuf":
         if array.dtype.kind == "O":
             try:
+                # astype would turn None into NaN and the text "2" into 2.0: refuse both
+                if any(item is None or isinstance(item, (str, bytes)) for item in array.flat):
+                    raise TypeError
                 array = array.astype(np.float64)
             except (TypeError, ValueError):
                 raise TypeError(
