@@ -24,7 +24,8 @@ The presets
 
 Any of SciPy's 24 ``seq`` strings (``"ZYX"``, ``"xyz"``, ``"ZXZ"``, …) is accepted wherever a
 preset name is, with angles named after their axes: ``z, y', x''`` for an intrinsic sequence
-(each prime marks an axis that has moved), ``x, y, z`` for an extrinsic one.
+(each prime marks an axis that has moved), ``x, y, z`` for an extrinsic one (a repeated
+fixed axis gets a 2: ``z, x, z2``).
 
 Gimbal lock
 -----------
@@ -179,7 +180,8 @@ def _from_sequence(seq: str) -> Convention:
         names = (letters[0], letters[1] + "'", letters[2] + "''")
         kind = "intrinsic (moving axes)"
     else:
-        names = (letters[0], letters[1], letters[2])
+        third = letters[2] + "2" if parsed.proper else letters[2]
+        names = (letters[0], letters[1], third)
         kind = "extrinsic (fixed axes)"
     family = "proper Euler" if parsed.proper else "Tait-Bryan"
     description = f"{kind} {family} sequence {'-'.join(letters)}, as SciPy reads {seq!r}"
@@ -216,6 +218,8 @@ def get_convention(name_or_seq: str | Convention) -> Convention:
     'rose'
     >>> get_convention("ZXZ").angle_names
     ('z', "x'", "z''")
+    >>> get_convention("zxz").angle_names
+    ('z', 'x', 'z2')
     >>> get_convention("yzx").description
     "extrinsic (fixed axes) Tait-Bryan sequence y-z-x, as SciPy reads 'yzx'"
     """
