@@ -183,6 +183,10 @@ def check_angles(
     want = np.asarray(expected, dtype=np.float64)
     if got.shape != want.shape:
         return CheckResult(False, f"off: your angles have shape {got.shape}, expected {want.shape}")
+    if not np.all(np.isfinite(got)):
+        return CheckResult(
+            False, "off: your angles contain NaN or infinity, expected finite numbers"
+        )
     unit = "°" if degrees else " rad"
     difference = np.abs(
         euler_to_matrix(got, seq, degrees=degrees) - euler_to_matrix(want, seq, degrees=degrees)
