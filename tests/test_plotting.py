@@ -1,0 +1,467 @@
+"""Tests of eulerlib.plotting: the geometry of what is drawn, read back from the artists.
+
+No baseline images: every test reads coordinates, labels and styles back from the matplotlib
+artists and compares them with rotations computed by SciPy's ``Rotation``.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from collections.abc import Iterator
+from typing import Any
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import matplotlib.pyplot as plt
+import numpy as np
+import pytest
+from matplotlib.animation import FuncAnimation
+from mpl_toolkits.mplot3d.art3d import Line3D, Text3D
+from scipy.spatial.transform import Rotation
+
+import eulerlib
+from eulerlib import plotting
+from eulerlib.plotting import (
+    aircraft_segments,
+    animate_gimbal_lock,
+    draw_aircraft,
+    draw_frame,
+    explorer,
+    explorer_state,
+    gimbal_ring_normals,
+    gimbal_ring_points,
+    new_3d_axes,
+    plot_body_rotation,
+    plot_frames,
+    plot_gimbal,
+    plot_sequence_steps,
+)
+
+TAIT_BRYAN = [s for s in eulerlib.ALL_SEQUENCES if s[0].lower() != s[2].lower()]
+PROPER = [s for s in eulerlib.ALL_SEQUENCES if s[0].lower() == s[2].lower()]
+E = np.eye(3)
+
+# Animations built only to inspect their frames are never rendered; matplotlib says so when
+# they are garbage collected.
+pytestmark = pytest.mark.filterwarnings("ignore:Animation was deleted without rendering")
+
+
+@pytest.fixture(autouse=True)
+def _close_figures() -> Iterator[None]:
+    yield
+    plt.close("all")
+
+
+def scipy_matrix(seq: str, angles: Any, degrees: bool = True) -> np.ndarray:
+    return np.asarray(Rotation.from_euler(seq, angles, degrees=degrees).as_matrix())
+
+
+def shaft_vector(line: Line3D) -> tuple[np.ndarray, np.ndarray]:
+    """Start point and end-minus-start of a two-point line."""
+    data = np.asarray(line.get_data_3d(), dtype=float)  # (3, 2)
+    return data[:, 0], data[:, 1] - data[:, 0]
+
+
+def shafts(ax: Any) -> dict[str, Line3D]:
+    """The frame shafts of an axes, by label (x, y', z'', ...)."""
+    found = {}
+    for line in ax.get_lines():
+        label = line.get_label()
+        if label[:1] in "xyz" and len(np.asarray(line.get_data_3d())[0]) == 2:
+            found[label] = line
+    return found
+
+
+def frame_matrix(ax: Any, suffix: str) -> np.ndarray:
+    """The matrix whose columns are the shafts labelled x+suffix, y+suffix, z+suffix."""
+    lines = shafts(ax)
+    return np.column_stack([shaft_vector(lines[letter + suffix])[1] for letter in "xyz"])
+
+
+# --------------------------------------------------------------------------- light import
+
+
+def test_import_eulerlib_does_not_load_matplotlib() -> None:
+    code = "import sys, eulerlib; print('matplotlib' in sys.modules, 'ipywidgets' in sys.modules)"
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    ).stdout
+    assert out.split() == ["False", "False"]
+
+
+# --------------------------------------------------------------------------- frames
+
+
+def test_new_3d_axes_is_an_equal_cube() -> None:
+    ax = new_3d_axes(limit=1.5, title="t")
+    assert ax.get_xlim() == ax.get_ylim() == ax.get_zlim() == (-1.5, 1.5)
+    aspect = np.asarray(ax.get_box_aspect())
+    assert np.allclose(aspect, aspect[0])
+    assert (ax.get_xlabel(), ax.get_ylabel(), ax.get_zlabel()) == ("x", "y", "z")
+    assert ax.get_title() == "t"
+    ax2 = new_3d_axes(ax.figure, (1, 2, 2))
+    assert len(ax.figure.axes) == 2 and ax2.name == "3d"
+
+
+def test_new_3d_axes_rejects_a_bad_limit() -> None:
+    with pytest.raises(ValueError, match="limit"):
+        new_3d_axes(limit=0)
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_draw_frame_arrows_follow_the_matrix_columns(seed: int) -> None:
+    R = np.asarray(Rotation.random(random_state=seed).as_matrix())
+    origin = np.array([0.2, -0.1, 0.3])
+    ax = new_3d_axes()
+    artists = draw_frame(ax, R, origin=origin, scale=0.7, label_suffix="'")
+    assert len(artists) == 9
+    for i, letter in enumerate("xyz"):
+        shaft, _head, text = artists[3 * i : 3 * i + 3]
+        assert isinstance(shaft, Line3D) and isinstance(text, Text3D)
+        start, vector = shaft_vector(shaft)
+        np.testing.assert_allclose(start, origin, atol=1e-15)
+        np.testing.assert_allclose(vector, 0.7 * R[:, i], atol=1e-14)
+        assert shaft.get_label() == letter + "'"
+        assert text.get_text() == letter + "'"
+        # The label sits beyond the tip, on the same line.
+        offset = np.asarray(text.get_position_3d()) - origin
+        np.testing.assert_allclose(np.cross(offset, R[:, i]), 0.0, atol=1e-12)
+        assert offset @ R[:, i] > 0.7
+
+
+def test_draw_frame_default_is_the_reference_frame_in_red_green_blue() -> None:
+    ax = new_3d_axes()
+    artists = draw_frame(ax, linestyle="--", alpha=0.5)
+    colors = [artists[3 * i].get_color() for i in range(3)]
+    assert colors == ["tab:red", "tab:green", "tab:blue"]
+    for i in range(3):
+        shaft = artists[3 * i]
+        np.testing.assert_array_equal(shaft_vector(shaft)[1], E[:, i])
+        assert shaft.get_linestyle() == "--"
+        assert shaft.get_alpha() == 0.5
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "match"),
+    [
+        ({"R": np.diag([1.0, 1.0, -1.0])}, "reflection"),
+        ({"R": np.eye(3)[None].repeat(2, axis=0)}, "one 3×3"),
+        ({"origin": (0, 0)}, "origin"),
+        ({"scale": 0.0}, "scale"),
+        ({"labels": ("a", "b")}, "3 entries"),
+    ],
+)
+def test_draw_frame_rejects_bad_input(kwargs: dict[str, Any], match: str) -> None:
+    ax = new_3d_axes()
+    with pytest.raises(ValueError, match=match):
+        draw_frame(ax, **kwargs)
+
+
+def test_plot_frames_draws_a_dashed_reference_and_solid_rotated_frames() -> None:
+    Rs = scipy_matrix("ZYX", [[30, 0, 0], [30, 20, 0], [30, 20, 10]])
+    fig = plot_frames(Rs, title="three steps")
+    (ax,) = fig.axes
+    lines = shafts(ax)
+    assert len(lines) == 12  # reference + three frames, three arrows each
+    for letter in "xyz":
+        assert lines[letter].get_linestyle() == "--"
+    for k, suffix in enumerate(["'", "''", "'''"]):
+        np.testing.assert_allclose(frame_matrix(ax, suffix), Rs[k], atol=1e-14)
+        assert all(lines[letter + suffix].get_linestyle() == "-" for letter in "xyz")
+    np.testing.assert_array_equal(frame_matrix(ax, ""), E)
+
+
+def test_plot_frames_labels_and_no_reference() -> None:
+    R = scipy_matrix("xyz", [10, 20, 30])
+    fig = plot_frames(R, labels=["_b"], reference=False)
+    lines = shafts(fig.axes[0])
+    assert sorted(lines) == ["x_b", "y_b", "z_b"]
+    np.testing.assert_allclose(frame_matrix(fig.axes[0], "_b"), R, atol=1e-14)
+
+
+def test_plot_frames_rejects_wrong_label_count() -> None:
+    with pytest.raises(ValueError, match="one entry per rotation"):
+        plot_frames(np.eye(3), labels=["'", "''"])
+
+
+# --------------------------------------------------------------------------- sequence steps
+
+
+def highlighted_axis(ax: Any) -> np.ndarray:
+    (line,) = [line for line in ax.get_lines() if line.get_gid() == "rotation-axis"]
+    _, vector = shaft_vector(line)
+    return vector / np.linalg.norm(vector)
+
+
+def assert_parallel(a: np.ndarray, b: np.ndarray) -> None:
+    np.testing.assert_allclose(np.cross(a, b), 0.0, atol=1e-12)
+    assert a @ b > 0
+
+
+@pytest.mark.parametrize(
+    ("seq", "angles"),
+    [("ZYX", [30, 20, 10]), ("XZX", [-40, 70, 25]), ("zxy", [15, -35, 60])],
+)
+def test_plot_sequence_steps_both_rows_end_in_the_same_frame(seq: str, angles: list[int]) -> None:
+    fig = plot_sequence_steps(angles, seq, degrees=True)
+    assert len(fig.axes) == 6
+    intrinsic = seq if seq.isupper() else seq[::-1].upper()
+    values = angles if seq.isupper() else angles[::-1]
+    expected = scipy_matrix(seq, angles)
+    top, bottom = fig.axes[:3], fig.axes[3:]
+    for step in range(3):
+        # Top row: frame after k intrinsic steps, turned about the moved axis.
+        after = scipy_matrix(intrinsic[: step + 1], values[: step + 1])
+        before = E if step == 0 else scipy_matrix(intrinsic[:step], values[:step])
+        axis = "xyz".index(intrinsic[step].lower())
+        primes = "'" * (step + 1)
+        np.testing.assert_allclose(frame_matrix(top[step], primes), after, atol=1e-12)
+        np.testing.assert_allclose(frame_matrix(top[step], primes[:-1]), before, atol=1e-12)
+        assert_parallel(highlighted_axis(top[step]), before[:, axis])
+        # Bottom row: the reversed steps about the fixed axes.
+        fixed_seq = intrinsic[::-1].lower()[: step + 1]
+        after_fixed = scipy_matrix(fixed_seq, values[::-1][: step + 1])
+        fixed_axis = "xyz".index(fixed_seq[-1])
+        np.testing.assert_allclose(frame_matrix(bottom[step], primes), after_fixed, atol=1e-12)
+        assert_parallel(highlighted_axis(bottom[step]), E[:, fixed_axis])
+    np.testing.assert_allclose(frame_matrix(top[2], "'''"), expected, atol=1e-12)
+    np.testing.assert_allclose(frame_matrix(bottom[2], "'''"), expected, atol=1e-12)
+
+
+def test_plot_sequence_steps_in_radians_matches_degrees() -> None:
+    fig = plot_sequence_steps(np.radians([30, 20, 10]), "ZYX")
+    assert fig.axes[0].get_title() == "1. 30° about z"
+    np.testing.assert_allclose(
+        frame_matrix(fig.axes[2], "'''"), scipy_matrix("ZYX", [30, 20, 10]), atol=1e-12
+    )
+
+
+@pytest.mark.parametrize(
+    ("angles", "seq", "error"),
+    [([1, 2], "ZYX", ValueError), ([1, 2, 3], "ZZX", ValueError), ([1, 2, 3], 3, TypeError)],
+)
+def test_plot_sequence_steps_rejects_bad_input(angles: Any, seq: Any, error: type) -> None:
+    with pytest.raises(error):
+        plot_sequence_steps(angles, seq)
+
+
+# --------------------------------------------------------------------------- aircraft
+
+
+@pytest.mark.parametrize(("up", "up_axis", "side_axis"), [("z", 2, 1), ("y", 1, 2)])
+def test_aircraft_nose_along_x_and_fin_along_up(up: str, up_axis: int, side_axis: int) -> None:
+    segments = aircraft_segments(up=up)
+    assert segments.ndim == 3 and segments.shape[1:] == (2, 3)
+    points = segments.reshape(-1, 3)
+    np.testing.assert_array_equal(points[np.argmax(points[:, 0])], [1.0, 0.0, 0.0])
+    # Nothing hangs below the wing plane; the fin is the highest point, behind the middle.
+    assert points[:, up_axis].min() == 0.0
+    top = points[np.argmax(points[:, up_axis])]
+    assert top[up_axis] > 0.3 and top[0] < 0
+    # Wings: symmetric along the side axis, spanning much wider than the fin is tall.
+    mirror = points.copy()
+    mirror[:, side_axis] *= -1
+    assert {tuple(p) for p in np.round(mirror, 12)} == {tuple(p) for p in np.round(points, 12)}
+    assert points[:, side_axis].max() > 2 * points[:, up_axis].max()
+
+
+def test_aircraft_rejects_unknown_up_axis() -> None:
+    with pytest.raises(ValueError, match="up must be"):
+        aircraft_segments(up="x")
+
+
+@pytest.mark.parametrize("up", ["z", "y"])
+def test_draw_aircraft_turns_every_point(up: str) -> None:
+    rotation = Rotation.from_euler("ZYX", [40, 25, -15], degrees=True)
+    ax = new_3d_axes()
+    lines = draw_aircraft(ax, rotation.as_matrix(), up=up, color="k", alpha=0.5, linestyle=":")
+    segments = aircraft_segments(up=up)
+    assert len(lines) == len(segments)
+    for line, segment in zip(lines, segments, strict=True):
+        drawn = np.asarray(line.get_data_3d()).T
+        np.testing.assert_allclose(drawn, rotation.apply(segment), atol=1e-14)
+        assert line.get_linestyle() == ":" and line.get_alpha() == 0.5
+
+
+def test_yaw_pitch_roll_move_nose_and_fin_as_a_pilot_expects() -> None:
+    ax = new_3d_axes()
+    yaw = draw_aircraft(ax, eulerlib.yaw_pitch_roll_to_matrix(90, 0, 0, degrees=True))
+    nose = np.asarray(yaw[0].get_data_3d())[:, 1]
+    np.testing.assert_allclose(nose, [0, 1, 0], atol=1e-15)  # yaw left: nose to +y
+    pitch = draw_aircraft(ax, eulerlib.yaw_pitch_roll_to_matrix(0, 90, 0, degrees=True))
+    nose = np.asarray(pitch[0].get_data_3d())[:, 1]
+    np.testing.assert_allclose(nose, [0, 0, -1], atol=1e-15)  # z up: positive pitch dips x
+
+
+def test_plot_body_rotation_goes_there_and_back() -> None:
+    R = scipy_matrix("ZYX", [30, 20, 10])
+    fig = plot_body_rotation(R)
+    assert [ax.get_title() for ax in fig.axes] == ["before", "after R", "back with Rᵀ"]
+    segments = aircraft_segments()
+    fuselage = segments[0]
+
+    def solid_fuselages(ax: Any) -> list[np.ndarray]:
+        return [
+            np.asarray(line.get_data_3d()).T
+            for line in ax.get_lines()
+            if line.get_linestyle() == "-" and len(line.get_xdata()) == 2
+        ]
+
+    before, after, back = (solid_fuselages(ax) for ax in fig.axes)
+    assert any(np.allclose(seg, fuselage) for seg in before)
+    assert any(np.allclose(seg, fuselage @ R.T) for seg in after)
+    assert not any(np.allclose(seg, fuselage) for seg in after)
+    assert any(np.allclose(seg, fuselage, atol=1e-14) for seg in back)
+    np.testing.assert_allclose(frame_matrix(fig.axes[1], "'"), R, atol=1e-14)
+
+
+# --------------------------------------------------------------------------- gimbal
+
+
+def expected_normals(seq: str, angles: list[float]) -> np.ndarray:
+    """Ring normals from SciPy: axis k of the frame each ring moves with."""
+    intrinsic = seq if seq.isupper() else seq[::-1].upper()
+    values = angles if seq.isupper() else angles[::-1]
+    a = ["xyz".index(c) for c in intrinsic.lower()]
+    frames = [scipy_matrix(intrinsic[: k + 1], values[: k + 1]) for k in range(3)]
+    columns = [3 - a[0] - a[1], 3 - a[1] - a[2], a[1]]
+    return np.array([frames[k][:, columns[k]] for k in range(3)])
+
+
+@pytest.mark.parametrize("seq", eulerlib.ALL_SEQUENCES)
+def test_ring_normals_are_the_rotated_axes(seq: str) -> None:
+    angles = [35.0, 50.0, -20.0]
+    normals = gimbal_ring_normals(angles, seq, degrees=True)
+    np.testing.assert_allclose(normals, expected_normals(seq, angles), atol=1e-12)
+    rings = gimbal_ring_points(np.radians(angles), seq, n=50)
+    for ring, normal, radius in zip(rings, normals, plotting.RING_RADII, strict=True):
+        assert ring.shape == (50, 3)
+        np.testing.assert_allclose(np.linalg.norm(ring, axis=1), radius, atol=1e-12)
+        np.testing.assert_allclose(ring @ normal, 0.0, atol=1e-12)
+        np.testing.assert_allclose(ring[0], ring[-1], atol=1e-12)
+
+
+def test_rings_at_rest_are_mutually_perpendicular() -> None:
+    normals = gimbal_ring_normals([0, 0, 0], "ZYX")
+    np.testing.assert_allclose(normals @ normals.T, E, atol=1e-15)
+
+
+@pytest.mark.parametrize("seq", TAIT_BRYAN + PROPER)
+@pytest.mark.parametrize("side", [0, 1])
+def test_two_rings_coplanar_at_lock_and_not_otherwise(seq: str, side: int) -> None:
+    proper = seq in PROPER
+    lock = (0.0, 180.0)[side] if proper else (-90.0, 90.0)[side]
+    angles = [25.0, lock, 70.0]
+    normals = gimbal_ring_normals(angles, seq, degrees=True)
+    assert abs(normals[0] @ normals[1]) == pytest.approx(1.0, abs=1e-12)
+    # All points of the middle ring lie in the plane of the outer ring.
+    rings = gimbal_ring_points(angles, seq, degrees=True, n=40)
+    np.testing.assert_allclose(rings[1] @ normals[0], 0.0, atol=1e-12)
+    # The locked rotation really is locked, by the library's own test of the matrix.
+    assert eulerlib.gimbal_lock_status(scipy_matrix(seq, angles), seq).locked
+    for middle in (lock + 20.0, lock - 5.0, lock + 0.5):
+        normals = gimbal_ring_normals([25.0, middle, 70.0], seq, degrees=True)
+        dots = np.abs(normals @ normals.T)[np.triu_indices(3, 1)]
+        assert dots.max() < 1 - 1e-5
+
+
+def test_plot_gimbal_draws_the_rings_and_reports_lock() -> None:
+    fig = plot_gimbal([30, 90, 10], "ZYX", degrees=True)
+    ax = fig.axes[0]
+    rings = gimbal_ring_points([30, 90, 10], "ZYX", degrees=True)
+    drawn = [np.asarray(line.get_data_3d()).T for line in ax.get_lines()]
+    for ring in rings:
+        assert any(d.shape == ring.shape and np.allclose(d, ring) for d in drawn)
+    assert "GIMBAL LOCK" in ax.get_title()
+    assert len(ax.get_legend().get_texts()) == 3
+    np.testing.assert_allclose(
+        frame_matrix(ax, "") * 1 / 0.45, scipy_matrix("ZYX", [30, 90, 10]), atol=1e-12
+    )
+    fig = plot_gimbal(np.radians([30, 60, 10]), "ZYX")
+    assert "30° from lock" in fig.axes[0].get_title()
+
+
+def test_plot_gimbal_into_an_existing_axes() -> None:
+    ax = new_3d_axes(figsize=(3, 3))
+    fig = plot_gimbal([0.1, 0.2, 0.3], "xyz", ax=ax)
+    assert fig is ax.figure and len(fig.axes) == 1
+
+
+def test_animation_sweeps_the_middle_angle_into_lock() -> None:
+    anim = animate_gimbal_lock(seq="ZYX", frames=24)
+    assert isinstance(anim, FuncAnimation)
+    values = list(anim.new_frame_seq())
+    assert len(values) == 24
+    assert values[0] == 0.0 and values[-1] == 90.0
+    assert np.all(np.diff(values) > 0)
+    proper = list(animate_gimbal_lock(seq="ZXZ", frames=5).new_frame_seq())
+    assert proper[0] == 90.0 and proper[-1] == 0.0
+
+
+def test_animation_renders_every_frame_and_ends_locked() -> None:
+    anim = animate_gimbal_lock(frames=3, figsize=(2, 2))
+    html = anim.to_jshtml(fps=5)
+    assert html.count("data:image/png;base64") == 3
+    (ax,) = anim._fig.axes
+    assert "GIMBAL LOCK" in ax.get_title()
+
+
+def test_animation_rejects_bad_frame_count() -> None:
+    with pytest.raises(ValueError, match="frames"):
+        animate_gimbal_lock(frames=1)
+
+
+# --------------------------------------------------------------------------- explorer
+
+
+def test_explorer_state_away_from_lock() -> None:
+    state = explorer_state([30, 20, 10], "ZYX")
+    np.testing.assert_allclose(state["matrix"], scipy_matrix("ZYX", [30, 20, 10]), atol=1e-12)
+    np.testing.assert_allclose(state["recovered"], [30, 20, 10], atol=1e-9)
+    assert not state["locked"]
+    assert state["distance"] == pytest.approx(70.0)
+    text = state["text"]
+    assert text.startswith("ZYX, angles (30°, 20°, 10°)")
+    assert "recovered angles: (30°, 20°, 10°)" in text
+    assert "distance to gimbal lock: 70°" in text and "LOCKED" not in text
+    assert f"{scipy_matrix('ZYX', [30, 20, 10])[2, 0]: .4f}" in text  # -sin(pitch)
+
+
+@pytest.mark.parametrize(("seq", "zeroed"), [("ZYX", 1), ("xyz", 3)])
+def test_explorer_state_at_lock(seq: str, zeroed: int) -> None:
+    state = explorer_state([30, 90, 10], seq)
+    assert state["locked"] and state["distance"] == 0.0
+    assert f"LOCKED: angle {zeroed} set to 0" in state["text"]
+    assert state["recovered"][zeroed - 1] == 0.0
+    np.testing.assert_allclose(
+        scipy_matrix(seq, state["recovered"]), scipy_matrix(seq, [30, 90, 10]), atol=1e-9
+    )
+
+
+def test_explorer_state_rejects_bad_input() -> None:
+    with pytest.raises(ValueError, match="invalid axis sequence"):
+        explorer_state([1, 2, 3], "ABC")
+    with pytest.raises(ValueError, match="shape"):
+        explorer_state([1, 2], "ZYX")
+    with pytest.raises(ValueError, match="three numbers"):
+        explorer_state([[1, 2, 3]], "ZYX")
+
+
+def test_explorer_widget_updates_live() -> None:
+    box = explorer("ZYX")
+    controls, view = box.children
+    sliders, dropdown = controls.children[:3], controls.children[3]
+    image, text = view.children
+    assert [s.value for s in sliders] == [30.0, 20.0, 10.0]
+    assert image.value[:8] == b"\x89PNG\r\n\x1a\n"
+    assert "distance to gimbal lock: 70°" in text.value
+    first_image = image.value
+    sliders[1].value = 90.0
+    assert "LOCKED" in text.value and image.value != first_image
+    dropdown.value = "XZX"
+    assert [s.description for s in sliders] == ["angle 1 (X)", "angle 2 (Z)", "angle 3 (X)"]
+    assert text.value.startswith("<pre>XZX, angles (30°, 90°, 10°)")
+    assert len(dropdown.options) == 24
