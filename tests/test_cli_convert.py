@@ -1,0 +1,244 @@
+"""``eulerlib convert`` driven through the real command line, checked against SciPy."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+
+Rotation = pytest.importorskip("scipy.spatial.transform").Rotation
+
+SCRIPT = Path(sys.executable).with_name("eulerlib")
+PYTHON_M = [sys.executable, "-m", "eulerlib"]
+COMMANDS = [pytest.param(PYTHON_M, id="python-m")]
+if SCRIPT.exists():
+    COMMANDS.append(pytest.param([str(SCRIPT)], id="console-script"))
+
+
+def convert(
+    command: list[str], *args: str, stdin: str | None = None
+) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [*command, "convert", *args],
+        input=stdin,
+        capture_output=True,
+        text=True,
+        encoding="utf-8",
+        timeout=120,
+        check=False,
+    )
+
+
+def convert_json(command: list[str], *args: str, stdin: str | None = None) -> Any:
+    result = convert(command, "--json", *args, stdin=stdin)
+    assert result.returncode == 0, result.stderr
+    assert result.stderr == ""
+    return json.loads(result.stdout)
+
+
+def assert_clean_failure(result: subprocess.CompletedProcess[str], *words: str) -> None:
+    """Non-zero exit, nothing on stdout, no traceback, the message on one line."""
+    assert result.returncode != 0
+    assert "Traceback" not in result.stderr
+    assert result.stdout == ""
+    lines = result.stderr.strip().splitlines()
+    assert lines, "no error message"
+    assert lines[-1].startswith(("eulerlib convert: error:", "eulerlib: error:"))
+    if result.returncode == 1:
+        assert len(lines) == 1, result.stderr
+    for word in words:
+        assert word in lines[-1]
+
+
+@pytest.fixture(params=COMMANDS)
+def command(request: pytest.FixtureRequest) -> list[str]:
+    value: list[str] = request.param
+    return value
+
+
+# --- angles in ----------------------------------------------------------------------------------
+
+
+def test_rose_to_ros_and_baker_match_scipy(command: list[str]) -> None:
+    report = convert_json(command, "--from", "rose", "--to", "ros", "--to", "baker",
+                          "--degrees", "30", "20", "10")  # fmt: skip
+    R = Rotation.from_euler("ZYX", [30, 20, 10], degrees=True)
+    assert_allclose(report["matrix"], R.as_matrix(), atol=1e-14)
+    ros, baker = report["conversions"]
+    assert ros["seq"] == "xyz"
+    assert ros["angle_names"] == ["roll", "pitch", "yaw"]
+    assert_allclose(ros["angles"], R.as_euler("xyz", degrees=True), atol=1e-10)
+    assert_allclose(ros["angles"], [10, 20, 30], atol=1e-10)
+    assert_allclose(baker["angles"], R.as_euler("YZX", degrees=True), atol=1e-10)
+    assert not baker["gimbal_lock"]
+    assert baker["distance_from_lock"] == pytest.approx(90 - abs(baker["angles"][1]))
+
+
+@pytest.mark.parametrize(
+    "angle_args",
+    [
+        ["--", "-30", "45", "10"],
+        ["--angles=-30,45,10"],
+        ["--angles", "-30 45 10"],
+        ["-30", "45", "10"],
+        ["--", "-30,", "45,", "10"],
+    ],
+    ids=["double-dash", "angles-equals", "angles-quoted", "bare", "commas"],
+)
+def test_negative_angles(command: list[str], angle_args: list[str]) -> None:
+    report = convert_json(command, "--from", "rose", "--to", "xyz", "--degrees", *angle_args)
+    expected = Rotation.from_euler("ZYX", [-30, 45, 10], degrees=True)
+    assert_allclose(report["matrix"], expected.as_matrix(), atol=1e-14)
+    assert_allclose(report["conversions"][0]["angles"], [10, 45, -30], atol=1e-10)
+
+
+@pytest.mark.parametrize("source", ["ZXZ", "yxy", "XZY", "baker"])
+def test_sequences_in_radians_match_scipy(source: str) -> None:
+    angles = [0.4, 1.1, -2.3]
+    targets = {"zyz": "zyz", "YXZ": "YXZ", "ros": "xyz", "Baker": "YZX"}
+    options = [word for name in targets for word in ("--to", name)]
+    report = convert_json(PYTHON_M, "--from", source, *options, "--", *map(str, angles))
+    source_seq = "YZX" if source == "baker" else source
+    R = Rotation.from_euler(source_seq, angles)
+    assert_allclose(report["matrix"], R.as_matrix(), atol=1e-14)
+    assert report["degrees"] is False
+    for conversion, seq in zip(report["conversions"], targets.values(), strict=True):
+        assert conversion["seq"] == seq
+        assert_allclose(conversion["angles"], R.as_euler(seq), atol=1e-10)
+
+
+def test_text_output_names_the_angles(command: list[str]) -> None:
+    result = convert(command, "--from", "baker", "--to", "rose", "--degrees", "40", "25", "-15")
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert lines[0] == "from baker (YZX): heading = 40°, attitude = 25°, bank = -15°"
+    assert lines[1] == "rotation matrix:"
+    printed = np.array([[float(x) for x in line.strip(" []").split()] for line in lines[2:5]])
+    assert_allclose(printed, Rotation.from_euler("YZX", [40, 25, -15], degrees=True).as_matrix(),
+                    atol=5e-7)  # fmt: skip
+    assert lines[5].startswith("to rose (ZYX): yaw = ")
+    assert lines[6].startswith("  distance from gimbal lock: ")
+
+
+# --- gimbal lock ---------------------------------------------------------------------------------
+
+
+def test_gimbal_lock_in_words(command: list[str]) -> None:
+    result = convert(command, "--from", "rose", "--to", "rose", "--degrees", "30", "90", "10")
+    assert result.returncode == 0
+    assert "Traceback" not in result.stderr
+    assert "Warning" not in result.stderr
+    assert "to rose (ZYX): yaw = 0°, pitch = 90°, roll = -20°" in result.stdout
+    assert (
+        "gimbal lock: the middle angle (pitch) is 90°, so yaw and roll turn about the same "
+        "axis and only roll - yaw is defined; yaw was set to 0 and roll carries the whole turn"
+    ) in result.stdout
+
+
+def test_baker_pole_from_a_matrix(command: list[str]) -> None:
+    # attitude +90° (north pole): Baker keeps heading + bank in heading, bank = 0
+    R = Rotation.from_euler("YZX", [40, 90, 10], degrees=True).as_matrix()
+    numbers = ",".join(repr(float(x)) for x in R.ravel())
+    report = convert_json(command, "--to", "baker", "--degrees", f"--matrix={numbers}")
+    baker = report["conversions"][0]
+    assert baker["gimbal_lock"] is True
+    assert_allclose(baker["angles"], [50, 90, 0], atol=1e-9)
+    assert "bank was set to 0 and heading carries the whole turn" in baker["note"]
+    assert "heading + bank is defined" in baker["note"]
+
+
+# --- matrix in -----------------------------------------------------------------------------------
+
+
+def test_matrix_numbers(command: list[str]) -> None:
+    report = convert_json(command, "--to", "rose", "--to", "XYZ", "--degrees",
+                          "--matrix", "0", "-1", "0", "1", "0", "0", "0", "0", "1")  # fmt: skip
+    R = np.array([[0, -1, 0], [1, 0, 0], [0, 0, 1]], dtype=float)
+    rose, xyz = report["conversions"]
+    assert_allclose(rose["angles"], [90, 0, 0], atol=1e-12)
+    expected = Rotation.from_matrix(R).as_euler("XYZ", degrees=True)
+    assert_allclose(xyz["angles"], expected, atol=1e-10)
+
+
+def test_matrix_file_and_stdin(command: list[str], tmp_path: Path) -> None:
+    R = Rotation.from_euler("ZYX", [-70, 35, 120], degrees=True).as_matrix()
+    text = "# a rotation, printed by numpy\n" + np.array2string(R, precision=17) + "\n"
+    path = tmp_path / "rotation.txt"
+    path.write_text(text, encoding="utf-8")
+    from_file = convert_json(command, "--to", "ros", "--degrees", "--matrix-file", str(path))
+    from_stdin = convert_json(command, "--to", "ros", "--degrees", "--matrix-file", "-",
+                              stdin=text)  # fmt: skip
+    for report in (from_file, from_stdin):
+        assert_allclose(report["conversions"][0]["angles"], [120, 35, -70], atol=1e-9)
+
+
+def test_repair_accepts_a_rounded_matrix(command: list[str]) -> None:
+    R = Rotation.from_euler("ZYX", [10, 20, 30], degrees=True).as_matrix()
+    rounded = ",".join(f"{x:.4f}" for x in R.ravel())
+    refused = convert(command, "--to", "rose", f"--matrix={rounded}")
+    assert_clean_failure(refused, "not a rotation matrix", "--repair")
+    report = convert_json(command, "--to", "rose", "--degrees", "--repair", f"--matrix={rounded}")
+    assert_allclose(report["conversions"][0]["angles"], [10, 20, 30], atol=1e-2)
+
+
+def test_list_and_help(command: list[str]) -> None:
+    listing = convert(command, "--list")
+    assert listing.returncode == 0
+    for word in ("rose", "baker", "ros", "aerospace", "ZYX", "YZX", "xyz", "zyz"):
+        assert word in listing.stdout
+    helped = convert(command, "--help")
+    assert helped.returncode == 0
+    assert "eulerlib convert --from rose --to xyz --degrees -- -30 45 10" in helped.stdout
+    assert "--angles=-30,45,10" in helped.stdout
+    top = subprocess.run([*command, "--help"], capture_output=True, text=True, check=False)
+    assert top.returncode == 0
+    assert "convert" in top.stdout
+
+
+# --- bad arguments -------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("args", "words"),
+    [
+        (["--from", "ZZX", "--to", "rose", "1", "2", "3"], ["unknown convention 'ZZX'", "rose"]),
+        (["--from", "rose", "--to", "rsoe", "1", "2", "3"], ["unknown convention 'rsoe'"]),
+        (["--from", "rose", "--to", "xyz", "1", "2"], ["expected 3 angles, got 2"]),
+        (["--from", "rose", "1", "2", "3", "4"], ["expected 3 angles, got 4"]),
+        (["--from", "rose", "--to", "xyz", "1", "two", "3"], ["'two' is not a number"]),
+        (["--from", "rose", "--angles=1,2,nan"], ["not a finite number"]),
+        (["--to", "rose", "--matrix", "1", "0", "0"], ["9 numbers", "got 3"]),
+        (["--to", "rose", "--matrix=1,0,0,0,1,0,0,0,2"], ["not a rotation matrix"]),
+        (["--to", "rose", "--matrix=1,0,0,0,1,0,0,0,-1"], ["reflection"]),
+        (["--to", "rose", "--matrix=1,0,0,0,1,0,0,x,1"], ["'x' is not a number"]),
+        (["--to", "rose", "--matrix-file", "no/such/file.txt"], ["no such file"]),
+        (["--from", "rose", "--matrix=1,0,0,0,1,0,0,0,1"], ["--from"]),
+        (["--matrix=1,0,0,0,1,0,0,0,1"], ["--to"]),
+        (["1", "2", "3"], ["--from"]),
+        ([], ["nothing to convert"]),
+        (["--from", "rose", "--to", "rose", "--bogus", "1", "2", "3"], ["--bogus"]),
+    ],
+)
+def test_bad_arguments_fail_cleanly(args: list[str], words: list[str]) -> None:
+    assert_clean_failure(convert(PYTHON_M, *args), *words)
+
+
+def test_bad_matrix_files_fail_cleanly(command: list[str], tmp_path: Path) -> None:
+    two_rows = tmp_path / "two_rows.txt"
+    two_rows.write_text("1 0 0\n0 1 0\n", encoding="utf-8")
+    assert_clean_failure(convert(command, "--to", "rose", "--matrix-file", str(two_rows)),
+                         "3 rows of 3 numbers")  # fmt: skip
+    ragged = tmp_path / "ragged.txt"
+    ragged.write_text("1 0 0\n0 1\n0 0 1\n", encoding="utf-8")
+    assert_clean_failure(convert(command, "--to", "rose", "--matrix-file", str(ragged)),
+                         "3 + 2 + 3")  # fmt: skip
+    assert_clean_failure(convert(command, "--to", "rose", "--matrix-file", str(tmp_path)),
+                         "folder")  # fmt: skip
+    assert_clean_failure(convert(command, "--to", "rose", "--matrix-file", "-", stdin="1 2\n"),
+                         "stdin")  # fmt: skip
