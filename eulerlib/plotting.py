@@ -85,7 +85,7 @@ RING_RADII = (1.0, 0.8, 0.6)
 #: Colour of the axis a step of a sequence turns about.
 HIGHLIGHT_COLOR = "gold"
 PRIME = "'"
-_VIEW = {"elev": 22.0, "azim": 50.0}
+_VIEW = {"elev": 28.0, "azim": 50.0}
 
 
 # --------------------------------------------------------------------------- helpers
@@ -827,13 +827,14 @@ def _draw_gimbal(ax: Axes3D, angles: NDArray[np.float64], seq: str) -> None:
     draw_frame(ax, frames[2], scale=0.45, linewidth=1.5)
     matrix = frames[2]
     status = gimbal_lock_status(matrix, "".join(AXIS_LETTERS[a] for a in axes).upper())
+    given = np.degrees(values if seq.isupper() else values[::-1]) + 0.0
+    shown = ", ".join(f"{v:.0f}°" for v in given)
     between = np.degrees(np.arccos(np.clip(abs(frames[1][:, axes[2]][axes[0]]), 0.0, 1.0)))
     state = (
         "GIMBAL LOCK" if status.locked else f"{float(np.degrees(status.distance)):.0f}° from lock"
     )
     ax.set_title(
-        f"{seq} ({_degrees_text(values if seq.isupper() else values[::-1])})\n"
-        f"axes 1 and 3 are {float(between):.0f}° apart: {state}",
+        f"{seq} ({shown})\naxes 1 and 3 are {float(between):.0f}° apart: {state}",
         fontsize=9,
     )
     ax.legend(handles=handles, loc="upper left", fontsize=7, frameon=False)
