@@ -1,0 +1,112 @@
+"""Tests of ``eulerlib figures``: the committed figures are exactly what the command writes."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import pytest
+from PIL import Image
+
+from eulerlib import cli, figures
+
+COMMITTED = Path(__file__).resolve().parents[1] / "figures"
+NOTEBOOK_TOPICS = [
+    "01_conventions_and_elementary_rotations",
+    "02_deriving_equation_2",
+    "03_matrix_to_angles",
+    "04_gimbal_lock_algebra",
+    "05_combining_rotations",
+    "06_rotating_points_and_objects",
+    "07_order_matters",
+    "08_gimbal_lock_seen",
+    "09_conventions_compared",
+    "10_numerical_robustness",
+]
+
+
+@pytest.fixture(scope="module")
+def fresh(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The figures written once into a new folder by ``write_figures``."""
+    out = tmp_path_factory.mktemp("figures") / "nested" / "out"
+    written = figures.write_figures(out)
+    assert [path.name for path in written] == list(figures.FIGURE_NAMES)
+    assert all(path.parent == out for path in written)
+    return out
+
+
+def listing(folder: Path) -> list[str]:
+    return sorted(path.name for path in folder.iterdir())
+
+
+def test_the_collection_has_one_thumbnail_per_notebook_and_the_key_figures() -> None:
+    expected = [f"{topic}.png" for topic in NOTEBOOK_TOPICS] + ["frame_zyx.svg", "gimbal_lock.gif"]
+    assert sorted(figures.FIGURE_NAMES) == sorted(expected)
+
+
+def test_committed_figures_are_exactly_what_the_command_writes(fresh: Path) -> None:
+    assert listing(fresh) == listing(COMMITTED)
+    for name in listing(COMMITTED):
+        assert (fresh / name).read_bytes() == (COMMITTED / name).read_bytes(), (
+            f"figures/{name} differs from a fresh run: regenerate with `eulerlib figures`"
+        )
+
+
+def test_outputs_carry_no_date_or_version(fresh: Path) -> None:
+    for name in listing(fresh):
+        data = (fresh / name).read_bytes()
+        assert matplotlib.__version__.encode() not in data, name
+        assert b"Software" not in data and b"<dc:date>" not in data, name
+    with Image.open(fresh / "10_numerical_robustness.png") as image:
+        assert "Software" not in image.info
+
+
+def test_gif_is_a_small_24_frame_loop(fresh: Path) -> None:
+    path = fresh / "gimbal_lock.gif"
+    assert path.stat().st_size <= 300_000
+    with Image.open(path) as image:
+        assert image.format == "GIF"
+        assert image.n_frames == figures.GIF_FRAMES == 24
+        assert image.info.get("loop") == 0
+
+
+def test_thumbnails_are_png_and_svg_is_svg(fresh: Path) -> None:
+    for topic in NOTEBOOK_TOPICS:
+        with Image.open(fresh / f"{topic}.png") as image:
+            assert image.format == "PNG"
+            assert max(image.size) <= 800
+    svg = (fresh / "frame_zyx.svg").read_text(encoding="utf-8")
+    assert svg.lstrip().startswith("<?xml") and "</svg>" in svg
+
+
+def test_console_command_writes_the_same_files(tmp_path: Path) -> None:
+    out = tmp_path / "cli"
+    result = subprocess.run(
+        [sys.executable, "-m", "eulerlib", "figures", "--out", str(out)],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.strip() == f"wrote {len(figures.FIGURE_NAMES)} figures to {out}"
+    assert listing(out) == listing(COMMITTED)
+    for name in listing(COMMITTED):
+        assert (out / name).read_bytes() == (COMMITTED / name).read_bytes(), name
+
+
+def test_figures_subcommand_is_registered_with_a_default_folder() -> None:
+    args = cli.build_parser().parse_args(["figures"])
+    assert args.out == Path("figures")
+    assert args.run is figures.run
+
+
+def test_out_must_not_be_a_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    target = tmp_path / "a_file"
+    target.write_text("not a folder")
+    assert cli.main(["figures", "--out", str(target)]) == 1
+    assert "is a file" in capsys.readouterr().err
