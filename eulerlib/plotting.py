@@ -120,9 +120,7 @@ def _partial_products(
     axes: tuple[int, int, int], values: NDArray[np.float64]
 ) -> NDArray[np.float64]:
     """Frames after one, two and three intrinsic steps, shape (3, 3, 3)."""
-    steps = elementary_rotation(0, 0.0)[None].repeat(3, axis=0)
-    for index in range(3):
-        steps[index] = elementary_rotation(axes[index], values[index])
+    steps = [elementary_rotation(axes[index], values[index]) for index in range(3)]
     frames = np.empty((3, 3, 3))
     frames[0] = steps[0]
     frames[1] = frames[0] @ steps[1]
@@ -426,9 +424,10 @@ def plot_sequence_steps(
     rotation: the same angles in reverse order, each about a **fixed** reference axis. Each
     panel shows the frame before the step (dashed), the frame after it (solid, one more prime
     on the axis names) and the axis of the step (a thick golden line). The last panels of the
-    two rows show the same frame: that is the identity
-    ``R_a(α) R_b(β) R_c(γ) = R_c(γ) R_b(β) R_a(α)`` read as "moving axes in one order equals
-    fixed axes in the reverse order".
+    two rows show the same frame, because both rows build the same product
+    ``R = R_a(α) R_b(β) R_c(γ)``: the top row from left to right (each new factor on the right
+    turns about a moved axis), the bottom row from right to left (each new factor on the left
+    turns about a fixed axis).
 
     Parameters
     ----------
