@@ -5,6 +5,7 @@ compares its outputs with the stored ones (strict nbval). For that comparison to
 the stored notebook must be exactly what a fresh execution writes, in a normal form:
 
 * code cells numbered 1, 2, 3, … in order, as a clean top-to-bottom run numbers them;
+* consecutive pieces of printed output joined into one (the kernel may split a print);
 * cell metadata reduced to the ``tags`` (no timings, no collapsed/scrolled state);
 * notebook metadata reduced to the ``python3`` kernelspec and the language name;
 * cell ids derived from the cell's position, so re-running never changes them.
@@ -50,7 +51,8 @@ def normalize_notebook(notebook: Any) -> Any:
         if cell.cell_type == "code":
             count += 1
             cell["execution_count"] = count
-            for output in cell.get("outputs", []):
+            cell["outputs"] = _merge_streams(cell.get("outputs", []))
+            for output in cell["outputs"]:
                 if output.get("output_type") == "execute_result":
                     output["execution_count"] = count
         else:
@@ -59,6 +61,27 @@ def normalize_notebook(notebook: Any) -> Any:
             if not cell.get("attachments"):
                 cell.pop("attachments", None)
     return result
+
+
+def _text(text: str | list[str]) -> str:
+    return "".join(text) if isinstance(text, list) else text
+
+
+def _merge_streams(outputs: list[Any]) -> list[Any]:
+    """Join consecutive stream outputs of the same name (the kernel may split one print)."""
+    merged: list[Any] = []
+    for output in outputs:
+        previous = merged[-1] if merged else None
+        if (
+            previous is not None
+            and output.get("output_type") == "stream"
+            and previous.get("output_type") == "stream"
+            and previous.get("name") == output.get("name")
+        ):
+            previous["text"] = _text(previous["text"]) + _text(output["text"])
+        else:
+            merged.append(output)
+    return merged
 
 
 def is_normalized(path: str | Path) -> bool:
