@@ -325,28 +325,31 @@ def _move_lock_turn(
     matrices: NDArray[np.float64],
     seq: str,
     locked: NDArray[np.bool_],
-    zeroed: int,
+    receiver: int,
 ) -> NDArray[np.float64]:
-    """At lock, move the whole turn from angle ``2 - zeroed`` to angle ``zeroed``.
+    """At lock, move the whole turn from angle ``2 - receiver`` to angle ``receiver``.
 
-    At lock the matrix depends only on ``third + s * first`` (or ``first + s * third``) with a
-    sign ``s`` that depends on the sequence and on which singular value the middle angle has;
-    both signs are tried and the one that rebuilds the matrix is kept, rotation by rotation.
+    At lock the matrix depends only on ``a + s * b`` for the two outer angles ``a``, ``b``,
+    with a sign ``s = ±1`` that depends on the sequence and on which singular value the middle
+    angle has. Setting angle ``2 - receiver`` to 0 and angle ``receiver`` to its old value plus or
+    minus the old value of the other keeps that combination for one of the two signs; both are
+    tried and the one that rebuilds the matrix is kept, rotation by rotation.
     """
-    carrier = 2 - zeroed
+    carrier = 2 - receiver
     turn = angles[..., carrier]
     candidates = []
     for sign in (1.0, -1.0):
         candidate = angles.copy()
         candidate[..., carrier] = 0.0
-        candidate[..., zeroed] = sign * turn + 0.0
+        moved = angles[..., receiver] + sign * turn
+        candidate[..., receiver] = np.remainder(moved + np.pi, 2.0 * np.pi) - np.pi + 0.0
         candidates.append(candidate)
     errors = [
         np.abs(euler_to_matrix(candidate, seq) - matrices).max(axis=(-2, -1))
         for candidate in candidates
     ]
-    moved = np.where((errors[0] <= errors[1])[..., None], candidates[0], candidates[1])
-    result: NDArray[np.float64] = np.where(locked[..., None], moved, angles)
+    best = np.where((errors[0] <= errors[1])[..., None], candidates[0], candidates[1])
+    result: NDArray[np.float64] = np.where(locked[..., None], best, angles)
     return result
 
 

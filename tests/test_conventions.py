@@ -146,6 +146,20 @@ def test_baker_poles_keep_bakers_policy(attitude: float, heading: float, bank: f
     assert_allclose(scipy_matrix("YZX", [h, a, b]), R, atol=1e-12)
 
 
+def test_baker_batch_mixes_poles_and_ordinary_attitudes() -> None:
+    hab = np.array([[40.0, 90.0, 10.0], [170.0, -90.0, -30.0], [-20.0, 35.0, 60.0]])
+    R = scipy_matrix("YZX", hab).reshape(3, 1, 3, 3)
+    with pytest.warns(GimbalLockWarning, match="gimbal lock in 2 of 3 rotation"):
+        angles = matrix_to_angles(R, "baker", degrees=True)
+    assert angles.shape == (3, 1, 3)
+    assert_allclose(angles[:, 0, 2], [0.0, 0.0, 60.0], atol=1e-9)
+    # Baker's pole rule: heading = atan2(m02, m22); away from the poles the angles come back
+    pole_heading = np.degrees(np.arctan2(R[:2, 0, 0, 2], R[:2, 0, 2, 2]))
+    assert_allclose(wrapped_difference(angles[:2, 0, 0], pole_heading), 0.0, atol=1e-9)
+    assert_allclose(angles[2, 0], hab[2], atol=1e-9)
+    assert_allclose(scipy_matrix("YZX", angles.reshape(3, 3)), R.reshape(3, 3, 3), atol=1e-12)
+
+
 @pytest.mark.parametrize("pitch", [90.0, -90.0])
 def test_rose_and_ros_zero_yaw_at_lock(pitch: float) -> None:
     R = scipy_matrix("ZYX", [30.0, pitch, 10.0])
