@@ -16,6 +16,7 @@ Examples
 array([30., 20., 10.])
 """
 
+from eulerlib.conventions import CONVENTIONS, Convention, convert_angles, get_convention
 from eulerlib.elementary import rot_x, rot_y, rot_z
 from eulerlib.euler import (
     GIMBAL_LOCK_TOLERANCE,
@@ -37,13 +38,17 @@ __version__ = "0.1.0"
 
 __all__ = [
     "ALL_SEQUENCES",
+    "CONVENTIONS",
     "GIMBAL_LOCK_TOLERANCE",
     "PROPER_EULER",
     "TAIT_BRYAN",
+    "Convention",
     "GimbalLockStatus",
     "GimbalLockWarning",
     "compose",
+    "convert_angles",
     "euler_to_matrix",
+    "get_convention",
     "gimbal_lock_status",
     "heading_attitude_bank_to_matrix",
     "invert",
