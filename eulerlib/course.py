@@ -177,13 +177,18 @@ def configure_parser(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     """Carry out ``eulerlib notebooks ...``."""
     if args.action == "refresh":
+        from nbclient.exceptions import CellExecutionError
+
         paths = args.notebooks or sorted(Path("notebooks").glob("*.ipynb"))
         if not paths:
             raise ValueError("no notebooks found: run from the repository root or name them")
         for path in paths:
             if not Path(path).is_file():
                 raise ValueError(f"no notebook at {path}")
-            refresh_notebook(path)
+            try:
+                refresh_notebook(path)
+            except CellExecutionError as error:  # one line, not the kernel's traceback
+                raise ValueError(f"{path}: a cell raised {error.ename}: {error.evalue}") from None
             print(f"refreshed {path}")
         return 0
     written = write_student_copies(args.src, args.out)
