@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import argparse
 import copy
+import subprocess
 from pathlib import Path
 from typing import Any
 
@@ -111,7 +112,7 @@ def refresh_notebook(path: str | Path, *, timeout: int = 300) -> None:
         record_timing=False,
         resources={"metadata": {"path": str(path.parent.resolve())}},
     )
-    client.execute()
+    client.execute(stderr=subprocess.DEVNULL)  # the kernel's own log lines are not the notebook's
     normal = normalize_notebook(notebook)
     nbformat.validate(normal)
     with path.open("w", encoding="utf-8", newline="\n") as stream:

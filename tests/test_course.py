@@ -509,3 +509,16 @@ def test_student_copies_refuse_the_course_folder(tmp_path: Path) -> None:
         write_student_copies(tmp_path, tmp_path)
     with pytest.raises(ValueError, match="no notebook folder"):
         write_student_copies(tmp_path / "missing", tmp_path / "out")
+
+
+def test_refresh_of_a_failing_notebook_fails_in_one_line(tmp_path: Path) -> None:
+    notebook = nbformat.v4.new_notebook()
+    notebook.cells = [nbformat.v4.new_code_cell("1 / 0")]
+    path = tmp_path / "broken.ipynb"
+    nbformat.write(notebook, str(path))
+    result = run_cli("notebooks", "refresh", str(path), cwd=tmp_path)
+    assert result.returncode == 1
+    assert "Traceback" not in result.stderr
+    assert result.stderr.strip().splitlines() == [
+        f"eulerlib notebooks: error: {path}: a cell raised ZeroDivisionError: division by zero"
+    ]
