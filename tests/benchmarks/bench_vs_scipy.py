@@ -1,0 +1,114 @@
+"""eulerlib against SciPy's ``Rotation``, side by side in one process.
+
+Run::
+
+    python tests/benchmarks/bench_vs_scipy.py [--n 1000000] [--repeats 7] [--seq ZYX]
+
+Each operation is timed on the same data for both libraries, best of ``--repeats`` runs with
+``time.perf_counter``, and the table shows the ratio SciPy time / eulerlib time (above 1 means
+eulerlib is faster). Both sides validate their input where the operation does so by default:
+``matrix_to_euler`` checks that every matrix is a rotation, and ``Rotation.from_matrix``
+orthogonalizes every matrix. This file is a script, not a test: nothing here asserts a time.
+"""
+
+from __future__ import annotations
+
+import argparse
+import platform
+import time
+from collections.abc import Callable
+
+import numpy as np
+import scipy
+from scipy.spatial.transform import Rotation
+
+import eulerlib
+
+
+def best_time(function: Callable[[], object], repeats: int) -> float:
+    """Shortest wall-clock time of ``repeats`` calls, in seconds."""
+    function()  # warm up: first-call allocations, lazy imports
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        function()
+        times.append(time.perf_counter() - start)
+    return min(times)
+
+
+def main(argv: list[str] | None = None) -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--n", type=int, default=1_000_000, help="rotations per call")
+    parser.add_argument("--repeats", type=int, default=7, help="timed runs per operation")
+    parser.add_argument("--seq", default="ZYX", help="axis sequence, as in Rotation.from_euler")
+    args = parser.parse_args(argv)
+    n, seq = args.n, args.seq
+
+    rng = np.random.default_rng(0)
+    angles = Rotation.random(n, rng=rng).as_euler(seq)
+    R = eulerlib.euler_to_matrix(angles, seq)
+    points = rng.normal(size=(n, 3))
+    rotation = Rotation.from_matrix(R)
+    one_R, one_rotation = R[0], rotation[0]
+
+    # the two libraries must agree on what they compute before their speed means anything
+    assert np.allclose(eulerlib.euler_to_matrix(angles, seq), rotation.as_matrix(), atol=1e-12)
+    assert np.allclose(eulerlib.matrix_to_euler(R, seq), angles, atol=1e-9)
+    assert np.allclose(eulerlib.rotate_points(R, points), rotation.apply(points), atol=1e-12)
+
+    cases: list[tuple[str, Callable[[], object], Callable[[], object]]] = [
+        (
+            "euler -> matrix",
+            lambda: eulerlib.euler_to_matrix(angles, seq),
+            lambda: Rotation.from_euler(seq, angles).as_matrix(),
+        ),
+        (
+            "matrix -> euler, validating",
+            lambda: eulerlib.matrix_to_euler(R, seq),
+            lambda: Rotation.from_matrix(R).as_euler(seq),
+        ),
+        (
+            "matrix -> euler, no check",
+            lambda: eulerlib.matrix_to_euler(R, seq, validate=False),
+            lambda: Rotation.from_matrix(R, assume_valid=True).as_euler(seq),
+        ),
+        (
+            "rotate points, from matrices",  # both check the n matrices
+            lambda: eulerlib.rotate_points(R, points),
+            lambda: Rotation.from_matrix(R).apply(points),
+        ),
+        (
+            "rotate points, no check",
+            lambda: eulerlib.rotate_points(R, points, validate=False),
+            lambda: Rotation.from_matrix(R, assume_valid=True).apply(points),
+        ),
+        (
+            "rotate points, Rotation built",  # SciPy's object was checked when it was built
+            lambda: eulerlib.rotate_points(R, points),
+            lambda: rotation.apply(points),
+        ),
+        (
+            "rotate points, 1 rotation",
+            lambda: eulerlib.rotate_points(one_R, points),
+            lambda: one_rotation.apply(points),
+        ),
+    ]
+
+    print(
+        f"n = {n:,} rotations, seq = {seq!r}, best of {args.repeats}; "
+        f"numpy {np.__version__}, scipy {scipy.__version__}, "
+        f"Python {platform.python_version()} on {platform.machine()}"
+    )
+    header = f"{'operation':<32}{'eulerlib':>12}{'scipy':>12}{'scipy/eulerlib':>16}"
+    print(header)
+    print("-" * len(header))
+    for name, ours, theirs in cases:
+        t_ours = best_time(ours, args.repeats)
+        t_theirs = best_time(theirs, args.repeats)
+        print(
+            f"{name:<32}{t_ours * 1e3:>9.1f} ms{t_theirs * 1e3:>9.1f} ms{t_theirs / t_ours:>15.2f}x"
+        )
+
+
+if __name__ == "__main__":
+    main()
