@@ -61,19 +61,13 @@ array([ 40., -25., -15.])
 
 from __future__ import annotations
 
-import warnings
 from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._validation import ROTATION_ATOL, as_float_array, as_matrices
-from eulerlib.euler import (
-    GimbalLockWarning,
-    euler_to_matrix,
-    gimbal_lock_status,
-    matrix_to_euler,
-)
+from eulerlib.euler import angles_from_matrix, euler_to_matrix
 from eulerlib.sequences import ALL_SEQUENCES, parse_sequence
 
 __all__ = [
@@ -301,56 +295,24 @@ def _angles_in(
     stacklevel: int,
 ) -> NDArray[np.float64]:
     """Body of :func:`matrix_to_angles`; ``stacklevel`` points the warning at the user's call."""
-    parsed = parse_sequence(chosen.seq)
     zeroed = chosen.zeroed_at_lock
     if zeroed not in (0, 2):
         raise ValueError(
             f"convention {chosen.name!r} has lock_zeroes={zeroed}; only the first (0) or the "
             "third (2) angle can be set to 0 at gimbal lock"
         )
-    matrices = as_matrices(R, "R", validate=validate, repair=repair, atol=atol)
-    angles = matrix_to_euler(matrices, chosen.seq, validate=False, warn=False)
-    locked = gimbal_lock_status(matrices, chosen.seq, validate=False).locked
-    library_zeroed = 0 if parsed.intrinsic else 2
-    if zeroed != library_zeroed and np.any(locked):
-        angles = _move_lock_turn(angles, matrices, chosen.seq, locked, library_zeroed)
-    if warn and np.any(locked):
-        message = _lock_words(chosen, zeroed, int(np.count_nonzero(locked)), int(locked.size))
-        warnings.warn(message, GimbalLockWarning, stacklevel=stacklevel)
-    return np.degrees(angles) if degrees else angles
-
-
-def _move_lock_turn(
-    angles: NDArray[np.float64],
-    matrices: NDArray[np.float64],
-    seq: str,
-    locked: NDArray[np.bool_],
-    receiver: int,
-) -> NDArray[np.float64]:
-    """At lock, move the whole turn from angle ``2 - receiver`` to angle ``receiver``.
-
-    At lock the matrix depends only on ``a + s * b`` for the two outer angles ``a``, ``b``,
-    with a sign ``s = ±1`` that depends on the sequence and on which singular value the middle
-    angle has. Setting angle ``2 - receiver`` to 0 and angle ``receiver`` to its old value plus or
-    minus the old value of the other keeps that combination for one of the two signs; both are
-    tried and the one that rebuilds the matrix is kept, rotation by rotation.
-    """
-    carrier = 2 - receiver
-    turn = angles[..., carrier]
-    candidates = []
-    for sign in (1.0, -1.0):
-        candidate = angles.copy()
-        candidate[..., carrier] = 0.0
-        moved = angles[..., receiver] + sign * turn
-        candidate[..., receiver] = np.remainder(moved + np.pi, 2.0 * np.pi) - np.pi + 0.0
-        candidates.append(candidate)
-    errors = [
-        np.abs(euler_to_matrix(candidate, seq) - matrices).max(axis=(-2, -1))
-        for candidate in candidates
-    ]
-    best = np.where((errors[0] <= errors[1])[..., None], candidates[0], candidates[1])
-    result: NDArray[np.float64] = np.where(locked[..., None], best, angles)
-    return result
+    return angles_from_matrix(
+        R,
+        parse_sequence(chosen.seq),
+        zeroed,
+        degrees=degrees,
+        validate=validate,
+        repair=repair,
+        atol=atol,
+        warn=warn,
+        describe=lambda count, total: _lock_words(chosen, zeroed, count, total),
+        stacklevel=stacklevel + 1,
+    )
 
 
 def matrix_to_angles(

@@ -46,6 +46,7 @@ once per call, and :func:`gimbal_lock_status` returns it as data.
 from __future__ import annotations
 
 import warnings
+from collections.abc import Callable
 from typing import Literal, NamedTuple
 
 import numpy as np
@@ -255,16 +256,50 @@ def intrinsic_angles(
 
 
 def lock_message(parsed: Sequence, count: int, total: int, zeroed: int) -> str:
-    """Words for a :class:`GimbalLockWarning`; ``zeroed`` is the intrinsic index set to 0."""
-    position = zeroed if parsed.intrinsic else 2 - zeroed
-    other = 2 - position
+    """Words for a :class:`GimbalLockWarning`; ``zeroed`` is the position (0 or 2) set to 0."""
+    other = 2 - zeroed
     singular = "0° or 180°" if parsed.proper else "±90°"
     return (
         f"gimbal lock in {count} of {total} rotation(s) for sequence {parsed.seq!r}: the middle "
-        f"angle is {singular}, so angles {1 + min(position, other)} and "
-        f"{1 + max(position, other)} turn about the same axis and only their combination is "
-        f"defined; angle {position + 1} was set to 0 and angle {other + 1} carries the turn"
+        f"angle is {singular}, so angles 1 and 3 turn about the same axis and only their "
+        f"combination is defined; angle {zeroed + 1} was set to 0 and angle {other + 1} "
+        "carries the turn"
     )
+
+
+def angles_from_matrix(
+    R: ArrayLike,
+    parsed: Sequence,
+    zeroed: int,
+    *,
+    degrees: bool,
+    validate: bool,
+    repair: bool,
+    atol: float,
+    warn: bool,
+    describe: Callable[[int, int], str] | None = None,
+    stacklevel: int = 3,
+) -> NDArray[np.float64]:
+    """The one body behind every matrix-to-angles function of eulerlib.
+
+    ``zeroed`` is the position, in the order the angles are written (0 for the first, 2 for the
+    third), of the angle set to 0 at gimbal lock: :func:`matrix_to_euler` passes the first angle
+    of the intrinsic form, Baker's named function passes bank. ``describe(count, total)`` words
+    the warning (default :func:`lock_message`); ``stacklevel`` is counted from here, so 3 points
+    at whoever called the public function that calls this one.
+    """
+    if zeroed not in (0, 2):
+        raise ValueError(f"only the first (0) or third (2) angle can be zeroed, got {zeroed!r}")
+    entries = as_matrix_entries(R, "R", validate=validate, repair=repair, atol=atol)
+    zero: Literal["first", "third"] = "first" if (zeroed == 0) == parsed.intrinsic else "third"
+    angles, locked = intrinsic_angles(entries, parsed, zero)
+    if not parsed.intrinsic:
+        angles = angles[..., ::-1]
+    if warn and np.any(locked):
+        count, total = int(np.count_nonzero(locked)), int(locked.size)
+        words = describe(count, total) if describe else lock_message(parsed, count, total, zeroed)
+        warnings.warn(words, GimbalLockWarning, stacklevel=stacklevel)
+    return np.degrees(angles) if degrees else angles
 
 
 def matrix_to_euler(
@@ -344,17 +379,16 @@ def matrix_to_euler(
     'GimbalLockWarning'
     """
     parsed = parse_sequence(seq)
-    entries = as_matrix_entries(R, "R", validate=validate, repair=repair, atol=atol)
-    angles, locked = intrinsic_angles(entries, parsed)
-    if not parsed.intrinsic:
-        angles = angles[..., ::-1]
-    if warn and np.any(locked):
-        warnings.warn(
-            lock_message(parsed, int(np.count_nonzero(locked)), int(locked.size), 0),
-            GimbalLockWarning,
-            stacklevel=2,
-        )
-    return np.degrees(angles) if degrees else angles
+    return angles_from_matrix(
+        R,
+        parsed,
+        0 if parsed.intrinsic else 2,
+        degrees=degrees,
+        validate=validate,
+        repair=repair,
+        atol=atol,
+        warn=warn,
+    )
 
 
 def gimbal_lock_status(

@@ -15,13 +15,11 @@ Baker's ``|m10| > 0.998`` cut-off, which reports an attitude of 86.4° as 90°.
 
 from __future__ import annotations
 
-import warnings
-
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._validation import ROTATION_ATOL, as_float_array, as_matrix_entries
-from eulerlib.euler import GimbalLockWarning, euler_to_matrix, intrinsic_angles, lock_message
+from eulerlib._validation import ROTATION_ATOL, as_float_array
+from eulerlib.euler import angles_from_matrix, euler_to_matrix
 from eulerlib.sequences import parse_sequence
 
 __all__ = ["heading_attitude_bank_to_matrix", "matrix_to_heading_attitude_bank"]
@@ -127,11 +125,14 @@ def matrix_to_heading_attitude_bank(
     >>> print(h, a, b)   # heading + bank = 50° survives; bank is set to 0
     50.0 90.0 0.0
     """
-    entries = as_matrix_entries(R, "R", validate=validate, repair=repair, atol=atol)
-    angles, locked = intrinsic_angles(entries, _YZX, zero="third")
-    if warn and np.any(locked):
-        message = lock_message(_YZX, int(np.count_nonzero(locked)), int(locked.size), 2)
-        warnings.warn(message, GimbalLockWarning, stacklevel=2)
-    if degrees:
-        angles = np.degrees(angles)
+    angles = angles_from_matrix(
+        R,
+        _YZX,
+        2,
+        degrees=degrees,
+        validate=validate,
+        repair=repair,
+        atol=atol,
+        warn=warn,
+    )
     return angles[..., 0], angles[..., 1], angles[..., 2]

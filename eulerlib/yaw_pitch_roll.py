@@ -14,13 +14,11 @@ computes pitch with ``atan2`` and detects the lock with a tolerance rather than 
 
 from __future__ import annotations
 
-import warnings
-
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._validation import ROTATION_ATOL, as_float_array, as_matrix_entries
-from eulerlib.euler import GimbalLockWarning, euler_to_matrix, intrinsic_angles, lock_message
+from eulerlib._validation import ROTATION_ATOL, as_float_array
+from eulerlib.euler import angles_from_matrix, euler_to_matrix
 from eulerlib.sequences import parse_sequence
 
 __all__ = ["matrix_to_yaw_pitch_roll", "yaw_pitch_roll_to_matrix"]
@@ -124,11 +122,14 @@ def matrix_to_yaw_pitch_roll(
     >>> print(yaw, pitch, roll)
     30.0 20.0 10.0
     """
-    entries = as_matrix_entries(R, "R", validate=validate, repair=repair, atol=atol)
-    angles, locked = intrinsic_angles(entries, _ZYX, zero="first")
-    if warn and np.any(locked):
-        message = lock_message(_ZYX, int(np.count_nonzero(locked)), int(locked.size), 0)
-        warnings.warn(message, GimbalLockWarning, stacklevel=2)
-    if degrees:
-        angles = np.degrees(angles)
+    angles = angles_from_matrix(
+        R,
+        _ZYX,
+        0,
+        degrees=degrees,
+        validate=validate,
+        repair=repair,
+        atol=atol,
+        warn=warn,
+    )
     return angles[..., 0], angles[..., 1], angles[..., 2]
