@@ -58,6 +58,24 @@ def as_vectors(value: ArrayLike, name: str) -> NDArray[np.float64]:
     return array
 
 
+def stack_angles(named: dict[str, ArrayLike]) -> NDArray[np.float64]:
+    """Check three separately given angles and stack them, broadcast, into shape ``(..., 3)``.
+
+    ``named`` maps each angle's name (used in messages) to its value, in sequence order.
+    """
+    values = [as_float_array(value, name) for name, value in named.items()]
+    try:
+        return np.stack(np.broadcast_arrays(*values), axis=-1)
+    except ValueError:
+        shapes = ", ".join(
+            f"{name} {value.shape}" for name, value in zip(named, values, strict=True)
+        )
+        raise ValueError(
+            f"{', '.join(list(named)[:-1])} and {list(named)[-1]} do not broadcast together: "
+            f"shapes {shapes}"
+        ) from None
+
+
 def _matrix_array(value: ArrayLike, name: str) -> NDArray[np.float64]:
     array = as_float_array(value, name)
     if array.ndim < 2 or array.shape[-2:] != (3, 3):

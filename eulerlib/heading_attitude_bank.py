@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._validation import ROTATION_ATOL, as_float_array
+from eulerlib._validation import ROTATION_ATOL, stack_angles
 from eulerlib.euler import angles_from_matrix, euler_to_matrix
 from eulerlib.sequences import parse_sequence
 
@@ -65,17 +65,7 @@ def heading_attitude_bank_to_matrix(
     >>> R @ [1.0, 0.0, 0.0]   # attitude 90°: the nose (x) points straight up (y)
     array([0., 1., 0.])
     """
-    values = [
-        as_float_array(a, n)
-        for a, n in ((heading, "heading"), (attitude, "attitude"), (bank, "bank"))
-    ]
-    try:
-        stacked = np.stack(np.broadcast_arrays(*values), axis=-1)
-    except ValueError:
-        shapes = ", ".join(str(v.shape) for v in values)
-        raise ValueError(
-            f"heading, attitude and bank do not broadcast together: shapes {shapes}"
-        ) from None
+    stacked = stack_angles({"heading": heading, "attitude": attitude, "bank": bank})
     return euler_to_matrix(stacked, "YZX", degrees=degrees)
 
 

@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._validation import ROTATION_ATOL, as_float_array
+from eulerlib._validation import ROTATION_ATOL, stack_angles
 from eulerlib.euler import angles_from_matrix, euler_to_matrix
 from eulerlib.sequences import parse_sequence
 
@@ -67,14 +67,7 @@ def yaw_pitch_roll_to_matrix(
     >>> yaw_pitch_roll_to_matrix([0.0, 0.1, 0.2], 0.3, 0.0).shape
     (3, 3, 3)
     """
-    values = [as_float_array(a, n) for a, n in ((yaw, "yaw"), (pitch, "pitch"), (roll, "roll"))]
-    try:
-        stacked = np.stack(np.broadcast_arrays(*values), axis=-1)
-    except ValueError:
-        shapes = ", ".join(str(v.shape) for v in values)
-        raise ValueError(
-            f"yaw, pitch and roll do not broadcast together: shapes {shapes}"
-        ) from None
+    stacked = stack_angles({"yaw": yaw, "pitch": pitch, "roll": roll})
     return euler_to_matrix(stacked, "ZYX", degrees=degrees)
 
 

@@ -115,7 +115,9 @@ def test_named_angles_not_numbers():
 
 
 def test_named_angles_that_do_not_broadcast():
-    with pytest.raises(ValueError, match=r"do not broadcast together: shapes \(2,\), \(3,\), \(\)"):
+    with pytest.raises(
+        ValueError, match=r"do not broadcast together: shapes yaw \(2,\), pitch \(3,\), roll \(\)"
+    ):
         yaw_pitch_roll_to_matrix([0.0, 1.0], [0.0, 1.0, 2.0], 0.0)
     with pytest.raises(ValueError, match=r"heading, attitude and bank do not broadcast"):
         heading_attitude_bank_to_matrix(np.zeros(2), np.zeros(3), 0.0)
