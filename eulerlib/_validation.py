@@ -7,8 +7,12 @@ in the same words, with what was received and what was expected.
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+
+from eulerlib._blocks import block_slices
 
 #: Default tolerance on ``max |R Rᵀ − I|`` and ``|det R − 1|`` for a matrix to count as a
 #: rotation. Loose enough for matrices that went through single precision or a few hundred
@@ -101,30 +105,50 @@ def as_matrices(
     if repair:
         return nearest_rotation(array, name)
     if validate:
-        check_rotation(matrix_entries(array), name, atol)
+        for _ in _entry_blocks(array, name, validate=True, repair=False, atol=atol):
+            pass
     return array
 
 
-def as_matrix_entries(
+def matrix_entry_blocks(
     value: ArrayLike,
     name: str = "R",
     *,
     validate: bool = True,
     repair: bool = False,
     atol: float = ROTATION_ATOL,
-) -> NDArray[np.float64]:
-    """Like :func:`as_matrices`, but return the entries as :func:`matrix_entries` lays them out.
+) -> tuple[tuple[int, ...], Iterator[tuple[slice, NDArray[np.float64]]]]:
+    """Check matrices block by block, for conversions that work entry by entry.
 
-    For conversions that work entry by entry: the check and the conversion then share one
-    contiguous copy of the data.
+    Returns the leading shape of ``value`` and an iterator over ``(block, entries)``: ``block``
+    slices the flattened leading axes, and ``entries`` holds that block's matrices as
+    :func:`matrix_entries` lays them out, already checked (or repaired) as in
+    :func:`as_matrices`. Type, shape and finiteness are checked before this returns; a matrix
+    that is not a rotation raises while iterating, with its index in the whole of ``value``.
     """
     array = _matrix_array(value, name)
-    if repair:
-        return matrix_entries(nearest_rotation(array, name))
-    entries = matrix_entries(array)
-    if validate:
-        check_rotation(entries, name, atol)
-    return entries
+    return array.shape[:-2], _entry_blocks(array, name, validate, repair, atol)
+
+
+def _entry_blocks(
+    array: NDArray[np.float64], name: str, validate: bool, repair: bool, atol: float
+) -> Iterator[tuple[slice, NDArray[np.float64]]]:
+    flat = array.reshape(-1, 3, 3)
+    for block in block_slices(flat.shape[0]):
+        try:
+            part = nearest_rotation(flat[block], name) if repair else flat[block]
+            entries = matrix_entries(part)
+            if validate and not repair:
+                check_rotation(entries, name, atol)
+        except ValueError:
+            # Say it again about the whole input, so that the index in the message is the
+            # caller's; earlier blocks passed, so the first bad matrix is in this block.
+            if repair:
+                nearest_rotation(array, name)
+            else:
+                check_rotation(matrix_entries(array), name, atol)
+            raise
+        yield block, entries
 
 
 def matrix_entries(R: NDArray[np.float64]) -> NDArray[np.float64]:

@@ -45,6 +45,7 @@ once per call, and :func:`gimbal_lock_status` returns it as data.
 
 from __future__ import annotations
 
+import math
 import warnings
 from collections.abc import Callable
 from typing import Literal, NamedTuple
@@ -52,8 +53,9 @@ from typing import Literal, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib._blocks import block_slices
 from eulerlib._trig import sin_cos
-from eulerlib._validation import ROTATION_ATOL, as_matrix_entries, as_vectors
+from eulerlib._validation import ROTATION_ATOL, as_vectors, matrix_entry_blocks
 from eulerlib.sequences import Sequence, parse_sequence
 
 __all__ = [
@@ -155,10 +157,21 @@ def euler_to_matrix(
     values = as_vectors(angles, "angles")
     if not parsed.intrinsic:
         values = values[..., ::-1]
+    flat = values.reshape(-1, 3)
+    R = np.empty((flat.shape[0], 3, 3))
+    for block in block_slices(flat.shape[0]):
+        _fill_matrices(R[block], flat[block], parsed, degrees)
+    return R.reshape(*values.shape[:-1], 3, 3)
+
+
+def _fill_matrices(
+    out: NDArray[np.float64], values: NDArray[np.float64], parsed: Sequence, degrees: bool
+) -> None:
+    """Write into ``out`` (shape (n, 3, 3)) the matrices of intrinsic angles ``values`` (n, 3)."""
     (i, j, k), sign = _frame(parsed)
     s, c = sin_cos(values, degrees)
-    s1, s2, s3 = s[..., 0], s[..., 1], s[..., 2]
-    c1, c2, c3 = c[..., 0], c[..., 1], c[..., 2]
+    s1, s2, s3 = s[:, 0], s[:, 1], s[:, 2]
+    c1, c2, c3 = c[:, 0], c[:, 1], c[:, 2]
     if parsed.proper:  # M = R_x(a) R_y(b) R_x(c)
         M = (
             (c2, s2 * s3, s2 * c3),
@@ -173,12 +186,10 @@ def euler_to_matrix(
             (s1 * s3 - c1 * s2 * c3, s1 * c3 + c1 * s2 * s3, c1 * c2),
         )
     index = (i, j, k)
-    R = np.empty((*values.shape[:-1], 3, 3))
     for r in range(3):
         for col in range(3):
             flip = sign[r] * sign[col]
-            R[..., index[r], index[col]] = M[r][col] if flip > 0 else -M[r][col]
-    return R
+            out[:, index[r], index[col]] = M[r][col] if flip > 0 else -M[r][col]
 
 
 def _relabelled(entries: NDArray[np.float64], parsed: Sequence):  # type: ignore[no-untyped-def]
@@ -290,9 +301,13 @@ def angles_from_matrix(
     """
     if zeroed not in (0, 2):
         raise ValueError(f"only the first (0) or third (2) angle can be zeroed, got {zeroed!r}")
-    entries = as_matrix_entries(R, "R", validate=validate, repair=repair, atol=atol)
+    lead, blocks = matrix_entry_blocks(R, "R", validate=validate, repair=repair, atol=atol)
     zero: Literal["first", "third"] = "first" if (zeroed == 0) == parsed.intrinsic else "third"
-    angles, locked = intrinsic_angles(entries, parsed, zero)
+    count = math.prod(lead)
+    flat_angles, flat_locked = np.empty((count, 3)), np.empty(count, dtype=bool)
+    for block, entries in blocks:
+        flat_angles[block], flat_locked[block] = intrinsic_angles(entries, parsed, zero)
+    angles, locked = flat_angles.reshape(*lead, 3), flat_locked.reshape(lead)
     if not parsed.intrinsic:
         angles = angles[..., ::-1]
     if warn and np.any(locked):
@@ -439,9 +454,12 @@ def gimbal_lock_status(
     array([1., 0.])
     """
     parsed = parse_sequence(seq)
-    entries = as_matrix_entries(R, "R", validate=validate, repair=repair, atol=atol)
-    m, _ = _relabelled(entries, parsed)
-    _, distance = _middle(m, parsed.proper)
+    lead, blocks = matrix_entry_blocks(R, "R", validate=validate, repair=repair, atol=atol)
+    flat_distance = np.empty(math.prod(lead))
+    for block, entries in blocks:
+        m, _ = _relabelled(entries, parsed)
+        _, flat_distance[block] = _middle(m, parsed.proper)
+    distance: NDArray[np.float64] = flat_distance.reshape(lead)
     if degrees:
         distance = np.degrees(distance)
     return GimbalLockStatus(distance <= tolerance, distance)

@@ -77,8 +77,9 @@ def rotate_points(
             "broadcast: their leading axes (all but the last two of R, all but the last of "
             "points) must be compatible"
         ) from None
-    if matrices.ndim == 2:  # one rotation for all points: a single BLAS product of rows
-        turned: NDArray[np.float64] = vectors @ matrices.T
+    if matrices.ndim == 2:  # one rotation for all points: a single BLAS product, R (3, n)
+        columns = vectors.reshape(-1, 3).T
+        turned: NDArray[np.float64] = (matrices @ columns).T.reshape(vectors.shape)
         return turned
     rotated: NDArray[np.float64] = (matrices @ vectors[..., np.newaxis])[..., 0]
     return rotated
