@@ -72,7 +72,7 @@ def elementary_rotation(
     R[..., axis, axis] = 1.0
     R[..., i, i] = c
     R[..., j, j] = c
-    R[..., i, j] = -s
+    R[..., i, j] = 0.0 - s  # not -s, which would print a zero sine as -0.
     R[..., j, i] = s
     return R
 

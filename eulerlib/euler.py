@@ -190,6 +190,7 @@ def _fill_matrices(
         for col in range(3):
             flip = sign[r] * sign[col]
             out[:, index[r], index[col]] = M[r][col] if flip > 0 else -M[r][col]
+    out += 0.0  # turns every -0.0 into 0.0, so that a quarter turn prints cleanly
 
 
 def _relabelled(entries: NDArray[np.float64], parsed: Sequence):  # type: ignore[no-untyped-def]
@@ -262,8 +263,10 @@ def intrinsic_angles(
             third = np.where(locked, 0.0, np.arctan2(-m(0, 1), m(0, 0)))
             s3, c3 = np.sin(third), np.cos(third)
             first = np.arctan2(s3 * m(2, 0) + c3 * m(2, 1), s3 * m(1, 0) + c3 * m(1, 1))
-        third = third * third_sign + 0.0
-    return np.stack([first, middle, third], axis=-1), locked
+        third = third * third_sign
+    angles = np.stack([first, middle, third], axis=-1)
+    angles += 0.0  # turns every -0.0 into 0.0
+    return angles, locked
 
 
 def lock_message(parsed: Sequence, count: int, total: int, zeroed: int) -> str:

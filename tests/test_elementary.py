@@ -5,6 +5,7 @@ import pytest
 from numpy.testing import assert_allclose, assert_array_equal
 from scipy.spatial.transform import Rotation
 
+import eulerlib
 from eulerlib import rot_x, rot_y, rot_z
 
 ROTATIONS = {"x": rot_x, "y": rot_y, "z": rot_z}
@@ -82,3 +83,13 @@ def test_shapes(shape, rng):
 def test_accepts_integers_and_lists():
     assert_array_equal(rot_x([0, 0]), np.stack([np.eye(3), np.eye(3)]))
     assert_array_equal(rot_y(180, degrees=True), np.diag([-1.0, 1.0, -1.0]))
+
+
+def test_zero_angles_give_no_negative_zeros():
+    # a zero sine negated is -0.0, which prints as "-0." in every matrix a learner looks at
+    matrices = [rot_x(0.0), rot_y(0.0), rot_z(0.0)]
+    matrices += [eulerlib.euler_to_matrix([0.0, 0.0, 0.0], seq) for seq in eulerlib.ALL_SEQUENCES]
+    for R in matrices:
+        assert not np.any(np.signbit(R)), R
+    for seq in eulerlib.ALL_SEQUENCES:
+        assert not np.any(np.signbit(eulerlib.matrix_to_euler(np.eye(3), seq, warn=False))), seq
