@@ -1,0 +1,189 @@
+"""A wireframe aircraft, so that yaw, pitch and roll can be seen.
+
+The nose points along +x and the top along the convention's up axis (+z for Rose, +y for
+Baker). Turning the body with a rotation matrix and back with its transpose shows eq 5–7 of
+Rose (2015) at work.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+    from mpl_toolkits.mplot3d.axes3d import Axes3D
+
+from eulerlib.plotting._base import (
+    _one_matrix,
+)
+from eulerlib.plotting.frames import draw_frame, new_3d_axes
+
+__all__ = [
+    "aircraft_segments",
+    "draw_aircraft",
+    "plot_body_rotation",
+]
+
+
+def aircraft_segments(*, up: str = "z") -> NDArray[np.float64]:
+    """A wireframe aircraft as line segments: nose along +x, vertical fin along +``up``.
+
+    The body is symmetric about the plane spanned by x and ``up``; the nose is the point
+    ``(1, 0, 0)``, the tail reaches back to x = -0.9, the wings span ±0.9 along the third axis,
+    and the fin (and the cockpit bump) rise along ``up`` up to 0.4.
+
+    Parameters
+    ----------
+    up : {"z", "y"}, optional
+        The body's up axis: ``"z"`` as in Rose's yaw-pitch-roll (aerospace, z up), ``"y"`` as
+        in Baker's heading-attitude-bank (y up; the wings then lie along z).
+
+    Returns
+    -------
+    ndarray, shape (n, 2, 3)
+        Segment ``k`` runs from ``segments[k, 0]`` to ``segments[k, 1]``.
+
+    Examples
+    --------
+    >>> segments = aircraft_segments(up="z")
+    >>> points = segments.reshape(-1, 3)
+    >>> points[np.argmax(points[:, 0])]        # the nose
+    array([1., 0., 0.])
+    >>> float(points[:, 2].max()), float(points[:, 1].max())   # fin height, half span
+    (0.4, 0.9)
+    """
+    if up not in ("z", "y"):
+        raise ValueError(f"up must be 'z' (Rose, aerospace) or 'y' (Baker), got {up!r}")
+    # Body coordinates: (forward, side, up).
+    half = [
+        ((0.3, 0.0, 0.0), (-0.1, 0.9, 0.0)),  # wing leading edge
+        ((-0.1, 0.9, 0.0), (-0.3, 0.9, 0.0)),  # wing tip
+        ((-0.3, 0.9, 0.0), (-0.2, 0.0, 0.0)),  # wing trailing edge
+        ((-0.6, 0.0, 0.0), (-0.85, 0.35, 0.0)),  # tailplane leading edge
+        ((-0.85, 0.35, 0.0), (-0.9, 0.0, 0.0)),  # tailplane trailing edge
+    ]
+    body = [
+        ((-0.9, 0.0, 0.0), (1.0, 0.0, 0.0)),  # fuselage, tail to nose
+        ((-0.55, 0.0, 0.0), (-0.8, 0.0, 0.4)),  # fin leading edge
+        ((-0.8, 0.0, 0.4), (-0.9, 0.0, 0.4)),  # fin top
+        ((-0.9, 0.0, 0.4), (-0.9, 0.0, 0.0)),  # fin trailing edge
+        ((0.75, 0.0, 0.0), (0.55, 0.0, 0.12)),  # cockpit
+        ((0.55, 0.0, 0.12), (0.3, 0.0, 0.12)),
+        ((0.3, 0.0, 0.12), (0.2, 0.0, 0.0)),
+    ]
+    half_array = np.array(half)
+    mirrored = half_array * np.array([1.0, -1.0, 1.0])
+    segments = np.concatenate([np.array(body), half_array, mirrored])
+    if up == "y":  # (forward, side, up) -> (x, y, z) = (forward, up, side)
+        segments = segments[..., [0, 2, 1]]
+    return segments
+
+
+def draw_aircraft(
+    ax: Axes3D,
+    R: ArrayLike | None = None,
+    *,
+    up: str = "z",
+    color: Any = "0.2",
+    alpha: float = 1.0,
+    linestyle: str = "-",
+) -> list[Any]:
+    """Draw the wireframe aircraft of :func:`aircraft_segments`, turned by ``R``.
+
+    Parameters
+    ----------
+    ax : Axes3D
+        Where to draw.
+    R : array_like, shape (3, 3), optional
+        Rotation applied to every point of the body (``R @ p``); identity by default.
+    up : {"z", "y"}, optional
+        Up axis of the body (see :func:`aircraft_segments`).
+    color, alpha, linestyle : optional
+        Line style of the wireframe.
+
+    Returns
+    -------
+    list of Line3D
+        One line per segment, in the order of :func:`aircraft_segments`.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> import eulerlib
+    >>> ax = new_3d_axes()
+    >>> lines = draw_aircraft(ax, eulerlib.rot_z(90, degrees=True))
+    >>> x, y, z = lines[0].get_data_3d()          # the fuselage now points along y
+    >>> np.round(y, 12) + 0.0
+    array([-0.9,  1. ])
+    >>> plt.close(ax.figure)
+    """
+    matrix = _one_matrix(R)
+    segments = aircraft_segments(up=up) @ matrix.T
+    lines = []
+    for segment in segments:
+        (line,) = ax.plot(
+            segment[:, 0],
+            segment[:, 1],
+            segment[:, 2],
+            color=color,
+            alpha=alpha,
+            linestyle=linestyle,
+            linewidth=1.8,
+        )
+        lines.append(line)
+    return lines
+
+
+def plot_body_rotation(
+    R: ArrayLike, *, up: str = "z", figsize: tuple[float, float] = (12, 4)
+) -> Figure:
+    """An aircraft before a rotation, after it, and back again with the inverse ``Rᵀ``.
+
+    Parameters
+    ----------
+    R : array_like, shape (3, 3)
+        The rotation.
+    up : {"z", "y"}, optional
+        Up axis of the body (see :func:`aircraft_segments`).
+    figsize : tuple of float, optional
+        Figure size in inches.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Three 3D axes: "before" (identity), "after R" (the rotated body and frame, the original
+        faint), and "back with Rᵀ" (the body turned by ``Rᵀ R``, which is the identity).
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import matplotlib.pyplot as plt
+    >>> import eulerlib
+    >>> fig = plot_body_rotation(eulerlib.euler_to_matrix([30, 20, 10], degrees=True))
+    >>> [ax.get_title() for ax in fig.axes]
+    ['before', 'after R', 'back with Rᵀ']
+    >>> plt.close(fig)
+    """
+    import matplotlib.pyplot as plt
+
+    matrix = _one_matrix(R)
+    back = matrix.T @ matrix
+    fig = plt.figure(figsize=figsize)
+    ax = new_3d_axes(fig, (1, 3, 1), title="before")
+    draw_frame(ax, None, alpha=0.6, linewidth=1.5)
+    draw_aircraft(ax, None, up=up)
+    ax = new_3d_axes(fig, (1, 3, 2), title="after R")
+    draw_frame(ax, None, linestyle="--", alpha=0.35, linewidth=1.2)
+    draw_aircraft(ax, None, up=up, alpha=0.25, linestyle="--")
+    draw_frame(ax, matrix, alpha=0.8, linewidth=1.5, label_suffix="'")
+    draw_aircraft(ax, matrix, up=up)
+    ax = new_3d_axes(fig, (1, 3, 3), title="back with Rᵀ")
+    draw_frame(ax, back, alpha=0.6, linewidth=1.5)
+    draw_aircraft(ax, back, up=up)
+    return fig
