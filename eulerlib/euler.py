@@ -193,7 +193,10 @@ def _fill_matrices(
     out += 0.0  # turns every -0.0 into 0.0, so that a quarter turn prints cleanly
 
 
-def _relabelled(entries: NDArray[np.float64], parsed: Sequence):  # type: ignore[no-untyped-def]
+_Entry = Callable[[int, int], NDArray[np.float64]]
+
+
+def _relabelled(entries: NDArray[np.float64], parsed: Sequence) -> tuple[_Entry, float]:
     """Entry accessor ``m(r, c)`` of ``M = Pᵀ R P`` and the sign of the third axis.
 
     ``entries`` holds the matrices ``R`` as laid out by ``_validation.matrix_entries``.
@@ -218,7 +221,7 @@ def _length(a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float6
     return result
 
 
-def _middle(m, proper: bool):  # type: ignore[no-untyped-def]
+def _middle(m: _Entry, proper: bool) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Middle angle and its distance from the singular value, both by atan2."""
     if proper:
         sine = _length(m(0, 1), m(0, 2))
