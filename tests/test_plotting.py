@@ -56,7 +56,12 @@ def _close_figures() -> Iterator[None]:
 
 
 def scipy_matrix(seq: str, angles: Any, degrees: bool = True) -> np.ndarray:
-    return np.asarray(Rotation.from_euler(seq, angles, degrees=degrees).as_matrix())
+    """SciPy's matrices; one 3×3 matrix for one set of angles.
+
+    (SciPy before 1.17 returns a stack of one for a one-letter sequence with a list of angles.)
+    """
+    matrices = np.asarray(Rotation.from_euler(seq, angles, degrees=degrees).as_matrix())
+    return matrices.reshape(3, 3) if np.ndim(angles) <= 1 else matrices
 
 
 def shaft_vector(line: Line3D) -> tuple[np.ndarray, np.ndarray]:
