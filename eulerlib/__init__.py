@@ -3,10 +3,16 @@
 The library behind the eulerlib course. Conventions follow D. Rose, "Rotations in
 Three-Dimensions: Euler Angles and Rotation Matrices, Part 2" (2015) and M. J. Baker, "Maths -
 Conversion Matrix to Euler" (euclideanspace.com); every one of the 24 axis sequences is
-available through the same ``seq`` strings as SciPy's ``Rotation.from_euler``.
+available through the same ``seq`` strings as SciPy's ``Rotation.from_euler``, and the papers'
+conventions by name (``"rose"``, ``"baker"``, ``"ros"``) wherever a ``seq`` is taken.
 
-``import eulerlib`` loads numpy only; SymPy and matplotlib load inside the submodules that use
-them (:mod:`eulerlib.symbolic`, :mod:`eulerlib.plotting`).
+Every public function checks its arguments once, by the same rules (:mod:`eulerlib._validation`),
+and the same keyword means the same thing everywhere: ``degrees`` (angles in and out in
+degrees), ``validate``/``repair``/``atol`` (how rotation matrices are checked), ``warn`` (the
+:class:`GimbalLockWarning`).
+
+``import eulerlib`` loads numpy only; SymPy and matplotlib load in :mod:`eulerlib.symbolic` and
+:mod:`eulerlib.plotting`, which need the ``symbolic`` and ``plot`` extras.
 
 Examples
 --------
@@ -16,49 +22,80 @@ Examples
 array([30., 20., 10.])
 """
 
-from eulerlib.conventions import CONVENTIONS, Convention, convert_angles, get_convention
-from eulerlib.elementary import rot_x, rot_y, rot_z
-from eulerlib.euler import (
+from eulerlib._validation import REPAIR_LIMIT, ROTATION_ATOL
+from eulerlib.conventions import CONVENTIONS, Convention, get_convention
+from eulerlib.convert import convert_angles
+from eulerlib.elementary import elementary_rotation, rot_x, rot_y, rot_z
+from eulerlib.euler import euler_to_matrix, matrix_to_euler
+from eulerlib.gimbal_lock import (
     GIMBAL_LOCK_TOLERANCE,
     GimbalLockStatus,
     GimbalLockWarning,
-    euler_to_matrix,
     gimbal_lock_status,
-    matrix_to_euler,
+    lock_combination,
 )
-from eulerlib.heading_attitude_bank import (
+from eulerlib.named import (
+    HeadingAttitudeBank,
+    YawPitchRoll,
     heading_attitude_bank_to_matrix,
     matrix_to_heading_attitude_bank,
+    matrix_to_yaw_pitch_roll,
+    yaw_pitch_roll_to_matrix,
 )
-from eulerlib.operations import compose, invert, is_rotation_matrix, rotate_points
-from eulerlib.sequences import ALL_SEQUENCES, PROPER_EULER, TAIT_BRYAN
-from eulerlib.yaw_pitch_roll import matrix_to_yaw_pitch_roll, yaw_pitch_roll_to_matrix
+from eulerlib.operations import (
+    compose,
+    invert,
+    is_rotation_matrix,
+    nearest_rotation,
+    rotate_points,
+)
+from eulerlib.sequences import (
+    ALL_SEQUENCES,
+    PROPER_EULER,
+    TAIT_BRYAN,
+    Sequence,
+    parse_axis,
+    parse_sequence,
+)
+from eulerlib.up_axis import change_up_axis, up_axis_matrix
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
 
 __all__ = [
     "ALL_SEQUENCES",
     "CONVENTIONS",
     "GIMBAL_LOCK_TOLERANCE",
     "PROPER_EULER",
+    "REPAIR_LIMIT",
+    "ROTATION_ATOL",
     "TAIT_BRYAN",
     "Convention",
     "GimbalLockStatus",
     "GimbalLockWarning",
+    "HeadingAttitudeBank",
+    "Sequence",
+    "YawPitchRoll",
+    "change_up_axis",
     "compose",
     "convert_angles",
+    "elementary_rotation",
     "euler_to_matrix",
     "get_convention",
     "gimbal_lock_status",
     "heading_attitude_bank_to_matrix",
     "invert",
     "is_rotation_matrix",
+    "lock_combination",
     "matrix_to_euler",
     "matrix_to_heading_attitude_bank",
     "matrix_to_yaw_pitch_roll",
+    "nearest_rotation",
+    "parse_axis",
+    "parse_sequence",
     "rot_x",
     "rot_y",
     "rot_z",
     "rotate_points",
+    "up_axis_matrix",
     "yaw_pitch_roll_to_matrix",
 ]

@@ -1,13 +1,29 @@
-"""Checks at the boundary: turn user input into float arrays, or say clearly why not.
+"""The argument rules of eulerlib: every public function checks its input here, once.
 
-Every public function of eulerlib passes its inputs through these helpers, so that a wrong
-shape, a NaN, text where numbers belong, or a matrix that is not a rotation is reported once,
-in the same words, with what was received and what was expected.
+A public function converts and checks each argument at its boundary, with the helpers below,
+and hands checked values to the inner layers, which never check again. So one rule holds for
+every function and every message reads the same:
+
+* **numbers** (angles, points, matrices) become float64 arrays; text, ``None``, complex numbers,
+  booleans, objects that are not numbers, masked arrays and values too large for a float are
+  refused with a ``TypeError`` or ``ValueError`` that names the argument; NaN and infinity are
+  refused with the index of the first one in the caller's array;
+* **flags** (``degrees``, ``validate``, ``repair``, ``warn``, …) are ``True`` or ``False``
+  (``bool`` or ``numpy.bool_``), nothing else: ``degrees="no"`` is a ``TypeError``, not a
+  silent yes;
+* **tolerances** (``atol``, ``tolerance``, …) are finite real numbers ≥ 0;
+* **choices** (an up axis, a frame) are one of a few words, in any letter case;
+* **rotation matrices** are checked for ``R Rᵀ = I`` and ``det R = +1`` within ``atol``, block
+  by block, so that no check allocates a temporary as large as the input; ``repair=True``
+  replaces each matrix by the nearest rotation instead, and refuses a matrix that has none
+  worth the name (see :func:`eulerlib.nearest_rotation`).
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -19,43 +35,171 @@ from eulerlib._blocks import block_slices
 #: products, tight enough to reject a scaled or sheared matrix.
 ROTATION_ATOL = 1e-6
 
+#: ``repair=True`` refuses a matrix whose singular values differ from 1 by more than this: such
+#: a matrix is singular, or scaled or sheared far beyond rounding and drift, and the "nearest
+#: rotation" would be an arbitrary answer rather than a repair.
+REPAIR_LIMIT = 0.1
+
+_KINDS = {"U": "text", "S": "bytes", "c": "complex numbers", "b": "booleans"}
+
+
+# --- flags, tolerances, choices -----------------------------------------------------------------
+
+
+def check_flag(value: object, name: str) -> bool:
+    """``value`` as a ``bool``, when it is ``True`` or ``False`` (Python or NumPy).
+
+    Examples
+    --------
+    >>> check_flag(True, "degrees")
+    True
+    >>> check_flag("no", "degrees")
+    Traceback (most recent call last):
+    ...
+    TypeError: degrees must be True or False, got 'no' (str)
+    """
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise TypeError(f"{name} must be True or False, got {value!r} ({type(value).__name__})")
+
+
+def check_tolerance(value: object, name: str) -> float:
+    """``value`` as a float, when it is a finite real number ≥ 0.
+
+    Examples
+    --------
+    >>> check_tolerance(1e-6, "atol")
+    1e-06
+    >>> check_tolerance(float("nan"), "atol")
+    Traceback (most recent call last):
+    ...
+    ValueError: atol must be a finite number ≥ 0, got nan
+    """
+    if isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf":
+        value = value[()]
+    if isinstance(value, (bool, np.bool_)) or not isinstance(
+        value, (int, float, np.integer, np.floating)
+    ):
+        raise TypeError(f"{name} must be a real number, got {value!r} ({type(value).__name__})")
+    try:
+        number = float(value)
+    except OverflowError:
+        raise ValueError(f"{name} must be a finite number ≥ 0, got {value!r}") from None
+    if not (math.isfinite(number) and number >= 0.0):
+        raise ValueError(f"{name} must be a finite number ≥ 0, got {value!r}")
+    return number
+
+
+def check_choice(value: object, name: str, choices: tuple[str, ...]) -> str:
+    """``value`` in lowercase, when it is one of ``choices`` (lowercase words), in any case.
+
+    Examples
+    --------
+    >>> check_choice("Y", "up", ("y", "z"))
+    'y'
+    >>> check_choice("w", "up", ("y", "z"))
+    Traceback (most recent call last):
+    ...
+    ValueError: up must be 'y' or 'z', got 'w'
+    """
+    listed = " or ".join(repr(choice) for choice in choices)
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be {listed} (a string), got {type(value).__name__}")
+    key = value.strip().lower()
+    if key not in choices:
+        raise ValueError(f"{name} must be {listed}, got {value!r}")
+    return key
+
+
+# --- numbers --------------------------------------------------------------------------------------
+
+
+def _index_text(shape: tuple[int, ...], flat_index: int) -> str:
+    if not shape:
+        return ""
+    index = tuple(int(i) for i in np.unravel_index(flat_index, shape))
+    return f" at index {index}"
+
+
+def _first_nonfinite(array: NDArray[np.float64]) -> int | None:
+    """Flat index of the first NaN or infinity in ``array``, or None when all are finite.
+
+    The common case costs one sum and no temporary: a sum of finite numbers is finite unless
+    it overflows, and any NaN or infinity makes the sum NaN or infinite. Only then is the array
+    searched, block by block.
+    """
+    with np.errstate(over="ignore", invalid="ignore"):
+        if math.isfinite(float(np.sum(array))):
+            return None
+    flat = array.reshape(-1)  # a view for the contiguous arrays that reach here in practice
+    for block in block_slices(flat.size, 1 << 16):
+        bad = np.flatnonzero(~np.isfinite(flat[block]))
+        if bad.size:
+            return int(block.start + bad[0])
+    return None
+
 
 def as_float_array(value: ArrayLike, name: str) -> NDArray[np.float64]:
-    """Return ``value`` as a float64 array, refusing text, complex numbers and non-finite values.
+    """``value`` as a float64 array of finite numbers, or a clear error naming ``name``.
 
     The input is never modified; a copy is made only when the dtype changes.
+
+    Examples
+    --------
+    >>> as_float_array([1, 2, 3], "angles")
+    array([1., 2., 3.])
+    >>> as_float_array([1.0, None, 2.0], "angles")
+    Traceback (most recent call last):
+    ...
+    TypeError: angles must be real numbers; got an array of objects that are not numbers
     """
     if isinstance(value, (str, bytes)):
         raise TypeError(f"{name} must be numbers, got text {value!r}")
+    if isinstance(value, np.ma.MaskedArray):
+        raise TypeError(
+            f"{name} is a masked array, whose mask eulerlib would ignore: fill the masked "
+            f"entries ({name}.filled(...)) or leave them out ({name}.compressed() or indexing "
+            "with ~mask) first"
+        )
     try:
         array = np.asarray(value)
     except (ValueError, TypeError) as error:  # ragged nested lists and the like
         raise ValueError(f"{name} could not be read as a numeric array: {error}") from None
+    except OverflowError:
+        raise ValueError(f"{name} holds a number too large for a float (above 1.8e308)") from None
     if array.dtype.kind not in "iuf":
-        if array.dtype.kind == "O":
-            try:
-                # astype would turn None into NaN and the text "2" into 2.0: refuse both
-                if any(item is None or isinstance(item, (str, bytes)) for item in array.flat):
-                    raise TypeError
-                array = array.astype(np.float64)
-            except (TypeError, ValueError):
-                raise TypeError(
-                    f"{name} must be real numbers; got an array of objects that are not numbers"
-                ) from None
-        else:
-            kinds = {"U": "text", "S": "bytes", "c": "complex numbers", "b": "booleans"}
-            what = kinds.get(array.dtype.kind, f"dtype {array.dtype}")
+        if array.dtype.kind != "O":
+            what = _KINDS.get(array.dtype.kind, f"dtype {array.dtype}")
             raise TypeError(f"{name} must be real numbers, got {what}")
+        # astype would turn None into NaN, the text "2" into 2.0 and True into 1.0: refuse them
+        if any(
+            item is None or isinstance(item, (str, bytes, bool, np.bool_, complex))
+            for item in array.flat
+        ):
+            raise TypeError(
+                f"{name} must be real numbers; got an array of objects that are not numbers"
+            )
+        try:
+            array = array.astype(np.float64)
+        except OverflowError:
+            raise ValueError(
+                f"{name} holds a number too large for a float (above 1.8e308)"
+            ) from None
+        except (TypeError, ValueError):
+            raise TypeError(
+                f"{name} must be real numbers; got an array of objects that are not numbers"
+            ) from None
     array = array.astype(np.float64, copy=False)
-    if not np.all(np.isfinite(array)):
-        bad = np.argwhere(~np.isfinite(array))[0]
-        where = f" at index {tuple(int(i) for i in bad)}" if array.ndim else ""
-        raise ValueError(f"{name} must be finite, got {array[tuple(bad)]}{where}")
+    bad = _first_nonfinite(array)
+    if bad is not None:
+        raise ValueError(
+            f"{name} must be finite, got {array.reshape(-1)[bad]}{_index_text(array.shape, bad)}"
+        )
     return array
 
 
 def as_vectors(value: ArrayLike, name: str) -> NDArray[np.float64]:
-    """Return ``value`` as a float array of shape ``(..., 3)``."""
+    """``value`` as a float array of shape ``(..., 3)``."""
     array = as_float_array(value, name)
     if array.ndim == 0 or array.shape[-1] != 3:
         raise ValueError(f"{name} must have shape (..., 3), got shape {array.shape}")
@@ -65,7 +209,7 @@ def as_vectors(value: ArrayLike, name: str) -> NDArray[np.float64]:
 def stack_angles(named: dict[str, ArrayLike]) -> NDArray[np.float64]:
     """Check three separately given angles and stack them, broadcast, into shape ``(..., 3)``.
 
-    ``named`` maps each angle's name (used in messages) to its value, in sequence order.
+    ``named`` maps each angle's name (used in messages) to its value, in argument order.
     """
     values = [as_float_array(value, name) for name, value in named.items()]
     try:
@@ -80,75 +224,36 @@ def stack_angles(named: dict[str, ArrayLike]) -> NDArray[np.float64]:
         ) from None
 
 
-def _matrix_array(value: ArrayLike, name: str) -> NDArray[np.float64]:
+def as_matrix_stack(value: ArrayLike, name: str) -> NDArray[np.float64]:
+    """``value`` as a float array of shape ``(..., 3, 3)`` with finite entries (no other check)."""
     array = as_float_array(value, name)
     if array.ndim < 2 or array.shape[-2:] != (3, 3):
         raise ValueError(f"{name} must have shape (..., 3, 3), got shape {array.shape}")
     return array
 
 
-def as_matrices(
-    value: ArrayLike,
-    name: str = "R",
-    *,
-    validate: bool = True,
-    repair: bool = False,
-    atol: float = ROTATION_ATOL,
-) -> NDArray[np.float64]:
-    """Return ``value`` as a float array of rotation matrices, shape ``(..., 3, 3)``.
+# --- rotation matrices ----------------------------------------------------------------------------
 
-    With ``repair=True`` each matrix is replaced by the nearest rotation (in the Frobenius
-    norm, through the SVD); a matrix whose nearest orthogonal matrix is a reflection is still
-    refused. With ``validate=False`` only the shape and finiteness are checked.
+
+class RotationCheck(NamedTuple):
+    """The three keywords every function that takes rotation matrices shares, checked.
+
+    ``validate``: check ``R Rᵀ = I`` and ``det R = +1`` within ``atol``; ``repair``: use the
+    nearest rotation instead (then nothing is checked against ``atol``).
     """
-    array = _matrix_array(value, name)
-    if repair:
-        return nearest_rotation(array, name)
-    if validate:
-        for _ in _entry_blocks(array, name, validate=True, repair=False, atol=atol):
-            pass
-    return array
+
+    validate: bool
+    repair: bool
+    atol: float
 
 
-def matrix_entry_blocks(
-    value: ArrayLike,
-    name: str = "R",
-    *,
-    validate: bool = True,
-    repair: bool = False,
-    atol: float = ROTATION_ATOL,
-) -> tuple[tuple[int, ...], Iterator[tuple[slice, NDArray[np.float64]]]]:
-    """Check matrices block by block, for conversions that work entry by entry.
-
-    Returns the leading shape of ``value`` and an iterator over ``(block, entries)``: ``block``
-    slices the flattened leading axes, and ``entries`` holds that block's matrices as
-    :func:`matrix_entries` lays them out, already checked (or repaired) as in
-    :func:`as_matrices`. Type, shape and finiteness are checked before this returns; a matrix
-    that is not a rotation raises while iterating, with its index in the whole of ``value``.
-    """
-    array = _matrix_array(value, name)
-    return array.shape[:-2], _entry_blocks(array, name, validate, repair, atol)
-
-
-def _entry_blocks(
-    array: NDArray[np.float64], name: str, validate: bool, repair: bool, atol: float
-) -> Iterator[tuple[slice, NDArray[np.float64]]]:
-    flat = array.reshape(-1, 3, 3)
-    for block in block_slices(flat.shape[0]):
-        try:
-            part = nearest_rotation(flat[block], name) if repair else flat[block]
-            entries = matrix_entries(part)
-            if validate and not repair:
-                check_rotation(entries, name, atol)
-        except ValueError:
-            # Say it again about the whole input, so that the index in the message is the
-            # caller's; earlier blocks passed, so the first bad matrix is in this block.
-            if repair:
-                nearest_rotation(array, name)
-            else:
-                check_rotation(matrix_entries(array), name, atol)
-            raise
-        yield block, entries
+def rotation_check(validate: object, repair: object, atol: object) -> RotationCheck:
+    """Check the ``validate``, ``repair`` and ``atol`` keywords of a public function."""
+    return RotationCheck(
+        check_flag(validate, "validate"),
+        check_flag(repair, "repair"),
+        check_tolerance(atol, "atol"),
+    )
 
 
 def matrix_entries(R: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -173,9 +278,9 @@ def orthonormality_error(entries: NDArray[np.float64]) -> NDArray[np.float64]:
 
     worst = np.abs(dot(0, 0) - 1.0)
     for r, s in ((1, 1), (2, 2)):
-        worst = np.maximum(worst, np.abs(dot(r, s) - 1.0))
+        np.maximum(worst, np.abs(dot(r, s) - 1.0), out=worst)
     for r, s in ((0, 1), (0, 2), (1, 2)):
-        worst = np.maximum(worst, np.abs(dot(r, s)))
+        np.maximum(worst, np.abs(dot(r, s)), out=worst)
     return worst
 
 
@@ -186,49 +291,111 @@ def determinant(entries: NDArray[np.float64]) -> NDArray[np.float64]:
     return result
 
 
-def _index_of_first(mask: NDArray[np.bool_]) -> str:
-    if mask.ndim == 0:
-        return ""
-    index = tuple(int(i) for i in np.argwhere(mask)[0])
-    return f" at index {index}"
+def _raise_unless_rotations(
+    entries: NDArray[np.float64], name: str, atol: float, lead: tuple[int, ...], offset: int
+) -> None:
+    """Raise ``ValueError`` unless every matrix of a block is a rotation within ``atol``.
 
-
-def check_rotation(entries: NDArray[np.float64], name: str, atol: float) -> None:
-    """Raise ``ValueError`` unless every matrix is a rotation within ``atol``.
-
-    ``entries`` are the matrices laid out by :func:`matrix_entries`.
+    ``entries`` holds a block of matrices laid out by :func:`matrix_entries`, shape ``(9, n)``;
+    ``offset`` is the flat index of its first matrix in the caller's array of leading shape
+    ``lead``, so that the message names the caller's index.
     """
     det = determinant(entries)
-    reflected = det < 0
-    if np.any(reflected):
-        first = det[tuple(np.argwhere(reflected)[0])] if det.ndim else det
+    reflected = np.flatnonzero(det < 0)
+    if reflected.size:
+        first = int(reflected[0])
         raise ValueError(
-            f"{name}{_index_of_first(reflected)} has determinant {float(first):.6g}: "
+            f"{name}{_index_text(lead, offset + first)} has determinant {float(det[first]):.6g}: "
             "a reflection, not a rotation"
         )
     error = orthonormality_error(entries)
-    bad = error > atol
-    if np.any(bad):
-        worst = float(error[tuple(np.argwhere(bad)[0])] if error.ndim else error)
+    bad = np.flatnonzero(~(error <= atol))
+    if bad.size:
+        first = int(bad[0])
         raise ValueError(
-            f"{name}{_index_of_first(bad)} is not a rotation matrix: max |R Rᵀ − I| = "
-            f"{worst:.3g} exceeds the tolerance {atol:g}; pass repair=True to use the "
-            "nearest rotation instead"
+            f"{name}{_index_text(lead, offset + first)} is not a rotation matrix: "
+            f"max |R Rᵀ − I| = {float(error[first]):.3g} exceeds the tolerance {atol:g}; pass "
+            "repair=True to use the nearest rotation instead"
         )
-    off = np.abs(det - 1.0) > atol
-    if np.any(off):  # only reachable for a singular-looking matrix that passed the Gram test
-        raise ValueError(f"{name}{_index_of_first(off)} has a determinant far from 1")
+    off = np.flatnonzero(~(np.abs(det - 1.0) <= atol))
+    if off.size:  # only reachable with a large atol: a matrix far from orthogonal passed
+        first = int(off[0])
+        raise ValueError(
+            f"{name}{_index_text(lead, offset + first)} has determinant "
+            f"{float(det[first]):.6g}, not 1 within the tolerance {atol:g}"
+        )
 
 
-def nearest_rotation(R: NDArray[np.float64], name: str = "R") -> NDArray[np.float64]:
-    """Nearest rotation matrix to each matrix of ``R`` in the Frobenius norm (via the SVD)."""
-    u, _, vt = np.linalg.svd(R)
-    det = np.linalg.det(u @ vt)
-    reflected = det < 0
-    if np.any(reflected):
+def nearest_rotations(
+    flat: NDArray[np.float64], name: str, lead: tuple[int, ...], offset: int
+) -> NDArray[np.float64]:
+    """Nearest rotation to each matrix of ``flat`` (shape ``(n, 3, 3)``), or a clear refusal.
+
+    ``lead`` and ``offset`` place the block in the caller's array for the messages, as in
+    :func:`_raise_unless_rotations`.
+    """
+    u, sigma, vt = np.linalg.svd(flat)
+    deviation = np.max(np.abs(sigma - 1.0), axis=-1)
+    far = np.flatnonzero(~(deviation <= REPAIR_LIMIT))
+    if far.size:
+        first = int(far[0])
+        values = ", ".join(f"{s:.3g}" for s in sigma[first])
+        where = f"{name}{_index_text(lead, offset + first)}"
+        if sigma[first, -1] <= 1e-12 * max(float(sigma[first, 0]), 1e-300):
+            rank = int(np.count_nonzero(sigma[first] > 1e-12 * sigma[first, 0]))
+            reason = f"is singular (rank {rank}, singular values {values})"
+        else:
+            reason = (
+                f"is too far from a rotation to repair: its singular values ({values}) differ "
+                f"from 1 by up to {float(deviation[first]):.3g}, more than {REPAIR_LIMIT:g}"
+            )
+        raise ValueError(f"{where} {reason}; only a matrix close to a rotation can be repaired")
+    Q = u @ vt
+    det = np.linalg.det(Q)
+    reflected = np.flatnonzero(det < 0)
+    if reflected.size:
+        first = int(reflected[0])
         raise ValueError(
-            f"{name}{_index_of_first(reflected)} is closest to a reflection (determinant < 0), "
-            "so it cannot be repaired into a rotation"
+            f"{name}{_index_text(lead, offset + first)} is closest to a reflection "
+            "(determinant < 0), so it cannot be repaired into a rotation"
         )
-    result: NDArray[np.float64] = u @ vt
+    result: NDArray[np.float64] = Q
     return result
+
+
+def rotation_entry_blocks(
+    matrices: NDArray[np.float64], name: str, check: RotationCheck
+) -> Iterator[tuple[slice, NDArray[np.float64]]]:
+    """Checked (or repaired) blocks of matrices, laid out for entry-by-entry arithmetic.
+
+    ``matrices`` has passed :func:`as_matrix_stack`. Yields ``(block, entries)``: ``block``
+    slices the flattened leading axes, ``entries`` holds that block's matrices as
+    :func:`matrix_entries` lays them out. A matrix that is not a rotation raises while
+    iterating, with its index in the whole of ``matrices``.
+    """
+    lead = matrices.shape[:-2]
+    flat = matrices.reshape(-1, 3, 3)
+    for block in block_slices(flat.shape[0]):
+        part = flat[block]
+        if check.repair:
+            part = nearest_rotations(part, name, lead, block.start)
+        entries = matrix_entries(part)
+        if check.validate and not check.repair:
+            _raise_unless_rotations(entries, name, check.atol, lead, block.start)
+        yield block, entries
+
+
+def as_rotations(value: ArrayLike, name: str, check: RotationCheck) -> NDArray[np.float64]:
+    """``value`` as rotation matrices ``(..., 3, 3)``: checked, or repaired into a new array."""
+    matrices = as_matrix_stack(value, name)
+    if check.repair:
+        repaired = np.empty(matrices.shape)
+        flat = repaired.reshape(-1, 3, 3)
+        source = matrices.reshape(-1, 3, 3)
+        for block in block_slices(flat.shape[0]):
+            flat[block] = nearest_rotations(source[block], name, matrices.shape[:-2], block.start)
+        return repaired
+    if check.validate:
+        for _ in rotation_entry_blocks(matrices, name, check):
+            pass
+    return matrices

@@ -134,7 +134,7 @@ def _read_matrix_file(path: str) -> NDArray[np.float64]:
     if path == "-":
         return parse_matrix_text(sys.stdin.read(), "matrix on stdin")
     try:
-        text = Path(path).read_text(encoding="utf-8")
+        text = Path(path).read_text(encoding="utf-8-sig")  # Notepad may start the file with a BOM
     except FileNotFoundError:
         raise OSError(f"cannot read the matrix file {path!r}: no such file") from None
     except IsADirectoryError:
@@ -229,34 +229,14 @@ def _angle_list(names: tuple[str, str, str], values: Any, unit: str, precision: 
     )
 
 
-def _combination(seq: str, middle: float) -> int:
-    """Sign ``s`` such that at lock the matrix depends on ``third + s * first`` only."""
-    from eulerlib.euler import euler_to_matrix
-
-    probe = euler_to_matrix([0.3, middle, 0.0], seq)
-    return 1 if np.allclose(probe, euler_to_matrix([0.0, middle, 0.3], seq)) else -1
-
-
-def _lock_words(convention: Any, angles: NDArray[np.float64], degrees: bool) -> str:
-    """One sentence about the gimbal lock of ``angles`` (radians) in ``convention``."""
-    from eulerlib.sequences import parse_sequence
-
-    names = convention.angle_names
-    zeroed = convention.zeroed_at_lock
-    kept = 2 - zeroed
-    proper = parse_sequence(convention.seq).proper
-    middle = float(angles[1])
-    singular = (np.pi if middle > np.pi / 2 else 0.0) if proper else np.copysign(np.pi / 2, middle)
-    shown = f"{_format(np.degrees(singular), 0)}°"
-    if not degrees:
-        shown += f" ({_format(singular, 6)} rad)"
-    sign = _combination(convention.seq, singular)
-    first, third = names[0], names[2]
-    combined = f"{first} + {third}" if sign > 0 else f"{third} - {first}"
+def _lock_words(facts: Any) -> str:
+    """One sentence about the gimbal lock of one matrix, from its :class:`GimbalLockWarning`."""
+    first, middle, third = facts.convention.angle_names
+    ((pole, combination),) = facts.combinations.items()
     return (
-        f"gimbal lock: the middle angle ({names[1]}) is {shown}, so {first} and {third} turn "
-        f"about the same axis and only {combined} is defined; {names[zeroed]} was set to 0 "
-        f"and {names[kept]} carries the whole turn"
+        f"gimbal lock: the middle angle ({middle}) is {pole}°, so {first} and {third} turn "
+        f"about the same axis and only {combination} is defined; {facts.zeroed} was set to 0 "
+        f"and {facts.carrier} carries the whole turn"
     )
 
 
@@ -313,19 +293,19 @@ def _input_angles(args: argparse.Namespace) -> list[float] | None:
 
 def run(args: argparse.Namespace) -> int:
     """Carry out ``eulerlib convert``; bad input raises ValueError/TypeError/OSError."""
-    from eulerlib._validation import as_matrices
-    from eulerlib.conventions import get_convention, matrix_to_angles
-    from eulerlib.euler import GimbalLockWarning, euler_to_matrix, gimbal_lock_status
+    from eulerlib import GimbalLockWarning, euler_to_matrix, gimbal_lock_status, matrix_to_euler
+    from eulerlib._validation import as_rotations, rotation_check
+    from eulerlib.conventions import get_convention
 
     if args.list:
         print(_list_conventions())
         return 0
     if args.precision < 0 or args.precision > 17:
         raise ValueError(f"--precision must be between 0 and 17, got {args.precision}")
-    if not args.atol > 0:
+    if not args.atol > 0 or not np.isfinite(args.atol):
         raise ValueError(f"--atol must be a positive number, got {args.atol}")
-    targets = [get_convention(name) for name in args.to]
-    source = get_convention(args.from_) if args.from_ is not None else None
+    targets = [get_convention(name, "--to") for name in args.to]
+    source = get_convention(args.from_, "--from") if args.from_ is not None else None
     given_matrix = _input_matrix(args)
     angles = _input_angles(args)
     unit = "°" if args.degrees else " rad"
@@ -340,7 +320,9 @@ def run(args: argparse.Namespace) -> int:
         if not targets:
             raise ValueError("a matrix needs at least one --to convention to express it in")
         try:
-            R = as_matrices(given_matrix, "the matrix", repair=args.repair, atol=args.atol)
+            R = as_rotations(
+                given_matrix, "the matrix", rotation_check(True, bool(args.repair), args.atol)
+            )
         except ValueError as error:
             message = str(error).replace("repair=True", "--repair")
             if "--repair" in message:
@@ -358,7 +340,7 @@ def run(args: argparse.Namespace) -> int:
                 "the angles need --from: name their convention, a preset such as rose, baker "
                 "or ros, or an axis sequence such as ZYX"
             )
-        R = euler_to_matrix(angles, source.seq, degrees=args.degrees)
+        R = euler_to_matrix(angles, source, degrees=args.degrees)
         report["input"] = {
             "convention": source.name,
             "seq": source.seq,
@@ -378,21 +360,20 @@ def run(args: argparse.Namespace) -> int:
 
     results = []
     for target in targets:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", GimbalLockWarning)
-            radians = matrix_to_angles(R, target, validate=False)
-        status = gimbal_lock_status(R, target.seq, validate=False)
-        shown = np.degrees(radians) if args.degrees else radians
-        distance = float(np.degrees(status.distance)) if args.degrees else float(status.distance)
-        note = _lock_words(target, radians, args.degrees) if bool(status.locked) else None
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", GimbalLockWarning)
+            shown = matrix_to_euler(R, target, degrees=args.degrees, validate=False)
+        locks = [w.message for w in caught if isinstance(w.message, GimbalLockWarning)]
+        status = gimbal_lock_status(R, target, degrees=args.degrees, validate=False)
+        note = _lock_words(locks[0]) if locks else None
         results.append(
             {
                 "convention": target.name,
                 "seq": target.seq,
                 "angle_names": list(target.angle_names),
                 "angles": [float(x) for x in shown],
-                "gimbal_lock": bool(status.locked),
-                "distance_from_lock": distance,
+                "gimbal_lock": bool(locks),
+                "distance_from_lock": float(status.distance),
                 "note": note,
             }
         )
@@ -402,7 +383,8 @@ def run(args: argparse.Namespace) -> int:
         if note:
             lines.append(f"  {note}")
         else:
-            lines.append(f"  distance from gimbal lock: {_format(distance, args.precision)}{unit}")
+            distance = _format(float(status.distance), args.precision)
+            lines.append(f"  distance from gimbal lock: {distance}{unit}")
     report["conversions"] = results
 
     if args.json:

@@ -25,24 +25,28 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._trig import sin_cos
-from eulerlib._validation import as_float_array
+from eulerlib._validation import as_float_array, check_flag
+from eulerlib.sequences import parse_axis
 
 __all__ = ["elementary_rotation", "rot_x", "rot_y", "rot_z"]
 
 
 def elementary_rotation(
-    axis: int, angle: ArrayLike, *, degrees: bool = False
+    axis: str | int, angle: ArrayLike, *, degrees: bool = False
 ) -> NDArray[np.float64]:
-    """Active right-handed rotation about coordinate axis ``axis`` (0 = x, 1 = y, 2 = z).
+    """Active right-handed rotation about a coordinate axis.
 
     Parameters
     ----------
-    axis : int
-        0, 1 or 2 for x, y or z.
+    axis : {'x', 'y', 'z', 0, 1, 2}
+        The axis, as a letter in either case or an index; exactly what
+        :func:`eulerlib.symbolic.elementary_matrix` accepts (see
+        :func:`eulerlib.parse_axis`).
     angle : array_like, shape (...)
         Rotation angle(s), in radians unless ``degrees`` is true.
     degrees : bool, optional
-        Read ``angle`` in degrees. Multiples of 90° then give exact zeros and ones.
+        Read ``angle`` in degrees, reduced modulo 360° exactly; multiples of 90° then give
+        exact zeros and ones.
 
     Returns
     -------
@@ -52,24 +56,25 @@ def elementary_rotation(
     Raises
     ------
     TypeError
-        If ``angle`` is not numeric.
+        If ``angle`` is not real numbers, ``axis`` is neither a letter nor an integer, or
+        ``degrees`` is not a bool.
     ValueError
-        If ``axis`` is not 0, 1 or 2, or ``angle`` is NaN or infinite.
+        If ``axis`` names no axis, or ``angle`` is NaN or infinite.
 
     Examples
     --------
-    >>> elementary_rotation(2, 90, degrees=True)
+    >>> elementary_rotation("z", 90, degrees=True)
     array([[ 0., -1.,  0.],
            [ 1.,  0.,  0.],
            [ 0.,  0.,  1.]])
     """
-    if axis not in (0, 1, 2):
-        raise ValueError(f"axis must be 0 (x), 1 (y) or 2 (z), got {axis!r}")
+    index = parse_axis(axis)
+    in_degrees = check_flag(degrees, "degrees")
     theta = as_float_array(angle, "angle")
-    s, c = sin_cos(theta, degrees)
-    i, j = (axis + 1) % 3, (axis + 2) % 3
+    s, c = sin_cos(theta, in_degrees)
+    i, j = (index + 1) % 3, (index + 2) % 3
     R = np.zeros((*theta.shape, 3, 3))
-    R[..., axis, axis] = 1.0
+    R[..., index, index] = 1.0
     R[..., i, i] = c
     R[..., j, j] = c
     R[..., i, j] = 0.0 - s  # not -s, which would print a zero sine as -0.

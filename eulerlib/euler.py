@@ -21,7 +21,7 @@ Every sequence is reduced to one of two shapes, x-y-z (Tait–Bryan) or x-y-x (p
 relabelling the axes with a signed permutation ``P`` that is itself a rotation: ``R = P M Pᵀ``.
 Then, for x-y-z,
 
-* the middle angle comes from ``atan2(M[0,2], hypot(M[0,0], M[0,1]))``: an ``atan2`` of a sine and
+* the middle angle comes from ``atan2(M[0,2], sqrt(M[0,0]² + M[0,1]²))``: an ``atan2`` of a sine and
   a cosine, accurate to the last bit even next to ±90°, where ``asin(M[0,2])`` loses half the
   digits;
 * the first angle comes from ``atan2(-M[1,2], M[2,2])``;
@@ -32,84 +32,47 @@ Then, for x-y-z,
 Gimbal lock
 -----------
 When the middle angle is ±90° (Tait–Bryan) or 0°/180° (proper Euler), the first and third axes
-line up and only their sum or difference is defined (Rose, eq 4; Baker's two poles). eulerlib's
-policy, the same for every spelling of a convention: **the first angle of the intrinsic form is
-set to 0** and the third carries the whole turn. For an extrinsic sequence, whose angles are
-the intrinsic ones reversed, that is the *last* angle. So ``matrix_to_euler(R, "ZYX")`` and
+line up and only their sum or difference is defined (Rose, eq 4; Baker's two poles). One angle
+is then set to 0 and the other carries the whole turn. Which one is the convention's policy
+(:mod:`eulerlib.conventions`); for a bare sequence it is **the first angle of the intrinsic
+form**, the *last* angle of an extrinsic sequence, so ``matrix_to_euler(R, "ZYX")`` and
 ``matrix_to_euler(R, "xyz")[..., ::-1]`` are identical, at lock too, and for ``"ZYX"`` the policy
 is Rose's choice (yaw = 0). A matrix counts as locked when its middle angle lies within
-:data:`GIMBAL_LOCK_TOLERANCE` radians of the singular value; zeroing the first angle then
-changes the rebuilt matrix by less than that tolerance. A :class:`GimbalLockWarning` reports it
-once per call, and :func:`gimbal_lock_status` returns it as data.
+:data:`eulerlib.GIMBAL_LOCK_TOLERANCE` radians of the singular value; zeroing one angle then
+changes the rebuilt matrix by less than that tolerance. A :class:`eulerlib.GimbalLockWarning`
+reports it once per call, and :func:`eulerlib.gimbal_lock_status` returns it as data (see
+:mod:`eulerlib.gimbal_lock`).
+
+Every function here also takes a preset name (``"rose"``, ``"baker"``, ``"ros"``) wherever it
+takes a ``seq``, with the preset's angle order and lock policy.
 """
 
 from __future__ import annotations
 
 import math
-import warnings
-from collections.abc import Callable
-from typing import Literal, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._blocks import block_slices
-from eulerlib._trig import sin_cos
-from eulerlib._validation import ROTATION_ATOL, as_vectors, matrix_entry_blocks
-from eulerlib.sequences import Sequence, parse_sequence
+from eulerlib._euler_kernels import fill_matrices, intrinsic_angles
+from eulerlib._validation import (
+    ROTATION_ATOL,
+    RotationCheck,
+    as_matrix_stack,
+    as_vectors,
+    check_flag,
+    rotation_check,
+    rotation_entry_blocks,
+)
+from eulerlib.conventions import Convention, get_convention
+from eulerlib.gimbal_lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
 
-__all__ = [
-    "GIMBAL_LOCK_TOLERANCE",
-    "GimbalLockStatus",
-    "GimbalLockWarning",
-    "euler_to_matrix",
-    "gimbal_lock_status",
-    "matrix_to_euler",
-]
-
-#: A matrix is in gimbal lock when its middle angle is within this many radians of the
-#: singular value (±π/2 for Tait–Bryan, 0 or π for proper Euler). 2⁻⁴⁹ ≈ 1.8e-15 is eight units
-#: in the last place of 1: about four times the distance that ordinary rounding noise puts
-#: between a lock matrix and the lock (measured on ``Q @ Q.T @ R``), and small enough that
-#: setting the first angle to 0 moves no entry of the rebuilt matrix by more than 2 × 2⁻⁴⁹.
-GIMBAL_LOCK_TOLERANCE = 2.0**-49
-
-
-class GimbalLockWarning(UserWarning):
-    """A matrix was in gimbal lock: one Euler angle was set to 0 by the documented policy."""
-
-
-class GimbalLockStatus(NamedTuple):
-    """Gimbal lock as data, one entry per rotation.
-
-    Attributes
-    ----------
-    locked : bool or ndarray of bool
-        True where the middle angle is within the tolerance of its singular value.
-    distance : float or ndarray
-        How far the middle angle is from the nearest singular value (radians, or degrees if
-        requested); 0 at lock, at most π/2.
-    """
-
-    locked: NDArray[np.bool_]
-    distance: NDArray[np.float64]
-
-
-def _frame(seq: Sequence) -> tuple[tuple[int, int, int], tuple[float, float, float]]:
-    """Signed permutation ``P`` (as index map and column signs) with ``R = P M Pᵀ``.
-
-    ``P`` sends x to the first axis ``i`` and y to the second axis ``j`` of the intrinsic
-    sequence, and z to ``eᵢ × eⱼ``, which is ``±`` the remaining axis; so ``P`` is a rotation and
-    ``M`` is the same product of rotations about x, y (and z or x) as ``R`` is about ``i``, ``j``.
-    """
-    i, j, _ = seq.intrinsic_axes
-    k = 3 - i - j
-    sign = 1.0 if (j - i) % 3 == 1 else -1.0  # eᵢ × eⱼ = +e_k for cyclic order
-    return (i, j, k), (1.0, 1.0, sign)
+__all__ = ["euler_to_matrix", "matrix_to_euler"]
 
 
 def euler_to_matrix(
-    angles: ArrayLike, seq: str = "ZYX", *, degrees: bool = False
+    angles: ArrayLike, seq: str | Convention = "ZYX", *, degrees: bool = False
 ) -> NDArray[np.float64]:
     """Rotation matrices from Euler angles in any of the 24 conventions.
 
@@ -117,11 +80,13 @@ def euler_to_matrix(
     ----------
     angles : array_like, shape (..., 3)
         Angle ``i`` goes with letter ``i`` of ``seq``. Leading axes are batch axes.
-    seq : str, optional
+    seq : str or Convention, optional
         Axis sequence as in SciPy's ``Rotation.from_euler``: uppercase intrinsic (moving axes),
-        lowercase extrinsic (fixed axes). Default ``"ZYX"``: yaw, pitch, roll (Rose 2015).
+        lowercase extrinsic (fixed axes); or a preset name such as ``"rose"`` or ``"baker"``.
+        Default ``"ZYX"``: yaw, pitch, roll (Rose 2015).
     degrees : bool, optional
-        Read ``angles`` in degrees (multiples of 90° then give exact zeros and ones).
+        Read ``angles`` in degrees. Degrees are reduced modulo 360° exactly, so angles of any
+        size are exact, and multiples of 90° give exact zeros and ones.
 
     Returns
     -------
@@ -131,7 +96,7 @@ def euler_to_matrix(
     Raises
     ------
     TypeError
-        If ``angles`` is not numeric or ``seq`` is not a string.
+        If ``angles`` is not real numbers, ``seq`` is not a string, or ``degrees`` not a bool.
     ValueError
         If ``angles`` has a wrong shape or non-finite values, or ``seq`` is invalid.
 
@@ -153,179 +118,29 @@ def euler_to_matrix(
     >>> euler_to_matrix(np.zeros((4, 2, 3))).shape
     (4, 2, 3, 3)
     """
-    parsed = parse_sequence(seq)
+    convention = get_convention(seq)
+    in_degrees = check_flag(degrees, "degrees")
     values = as_vectors(angles, "angles")
-    if not parsed.intrinsic:
-        values = values[..., ::-1]
+    return angles_to_matrices(values, convention, in_degrees)
+
+
+def angles_to_matrices(
+    values: NDArray[np.float64], convention: Convention, degrees: bool
+) -> NDArray[np.float64]:
+    """Body of :func:`euler_to_matrix` for checked angles of shape ``(..., 3)``."""
+    parsed = convention.parsed
     flat = values.reshape(-1, 3)
+    if not parsed.intrinsic:
+        flat = flat[:, ::-1]
     R = np.empty((flat.shape[0], 3, 3))
     for block in block_slices(flat.shape[0]):
-        _fill_matrices(R[block], flat[block], parsed, degrees)
+        fill_matrices(R[block], flat[block], parsed, degrees)
     return R.reshape(*values.shape[:-1], 3, 3)
-
-
-def _fill_matrices(
-    out: NDArray[np.float64], values: NDArray[np.float64], parsed: Sequence, degrees: bool
-) -> None:
-    """Write into ``out`` (shape (n, 3, 3)) the matrices of intrinsic angles ``values`` (n, 3)."""
-    (i, j, k), sign = _frame(parsed)
-    s, c = sin_cos(values, degrees)
-    s1, s2, s3 = s[:, 0], s[:, 1], s[:, 2]
-    c1, c2, c3 = c[:, 0], c[:, 1], c[:, 2]
-    if parsed.proper:  # M = R_x(a) R_y(b) R_x(c)
-        M = (
-            (c2, s2 * s3, s2 * c3),
-            (s1 * s2, c1 * c3 - s1 * c2 * s3, -c1 * s3 - s1 * c2 * c3),
-            (-c1 * s2, s1 * c3 + c1 * c2 * s3, c1 * c2 * c3 - s1 * s3),
-        )
-    else:  # M = R_x(a) R_y(b) R_z(±c): the third axis is ±z
-        s3 = s3 * sign[2]
-        M = (
-            (c2 * c3, -c2 * s3, s2),
-            (c1 * s3 + s1 * s2 * c3, c1 * c3 - s1 * s2 * s3, -s1 * c2),
-            (s1 * s3 - c1 * s2 * c3, s1 * c3 + c1 * s2 * s3, c1 * c2),
-        )
-    index = (i, j, k)
-    for r in range(3):
-        for col in range(3):
-            flip = sign[r] * sign[col]
-            out[:, index[r], index[col]] = M[r][col] if flip > 0 else -M[r][col]
-    out += 0.0  # turns every -0.0 into 0.0, so that a quarter turn prints cleanly
-
-
-_Entry = Callable[[int, int], NDArray[np.float64]]
-
-
-def _relabelled(entries: NDArray[np.float64], parsed: Sequence) -> tuple[_Entry, float]:
-    """Entry accessor ``m(r, c)`` of ``M = Pᵀ R P`` and the sign of the third axis.
-
-    ``entries`` holds the matrices ``R`` as laid out by ``_validation.matrix_entries``.
-    """
-    index, sign = _frame(parsed)
-
-    def m(r: int, c: int) -> NDArray[np.float64]:
-        entry: NDArray[np.float64] = entries[3 * index[r] + index[c]]
-        return entry if sign[r] * sign[c] > 0 else -entry
-
-    return m, sign[2]
-
-
-def _length(a: NDArray[np.float64], b: NDArray[np.float64]) -> NDArray[np.float64]:
-    """``sqrt(a² + b²)`` for entries of a rotation matrix.
-
-    The entries are at most about 1, so the squares cannot overflow, and an entry small enough
-    for its square to underflow changes no angle; this is about six times faster than
-    ``np.hypot``, which guards against both at every element.
-    """
-    result: NDArray[np.float64] = np.sqrt(a * a + b * b)
-    return result
-
-
-def _middle(m: _Entry, proper: bool) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Middle angle and its distance from the singular value, both by atan2."""
-    if proper:
-        sine = _length(m(0, 1), m(0, 2))
-        cosine = m(0, 0)
-        return np.arctan2(sine, cosine), np.arctan2(sine, np.abs(cosine))
-    sine = m(0, 2)
-    cosine = _length(m(0, 0), m(0, 1))
-    return np.arctan2(sine, cosine), np.arctan2(cosine, np.abs(sine))
-
-
-def intrinsic_angles(
-    entries: NDArray[np.float64],
-    parsed: Sequence,
-    zero: Literal["first", "third"] = "first",
-    tolerance: float = GIMBAL_LOCK_TOLERANCE,
-) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
-    """Angles of the *intrinsic* form of ``parsed`` for validated matrices.
-
-    ``entries`` holds the matrices as laid out by ``_validation.matrix_entries``.
-    Returns the angles, shape ``(..., 3)`` in intrinsic order, and the lock mask. At lock the
-    angle named by ``zero`` is set to 0 and the other is solved from the matrix; away from lock
-    the angle named by ``zero`` comes from its own ratio and the other is solved from it.
-    """
-    m, third_sign = _relabelled(entries, parsed)
-    middle, distance = _middle(m, parsed.proper)
-    locked = distance <= tolerance
-    if parsed.proper:  # M = R_x(a) R_y(b) R_x(c)
-        if zero == "first":
-            first = np.where(locked, 0.0, np.arctan2(m(1, 0), -m(2, 0)))
-            s1, c1 = np.sin(first), np.cos(first)
-            third = np.arctan2(-(c1 * m(1, 2) + s1 * m(2, 2)), c1 * m(1, 1) + s1 * m(2, 1))
-        else:
-            third = np.where(locked, 0.0, np.arctan2(m(0, 1), m(0, 2)))
-            s3, c3 = np.sin(third), np.cos(third)
-            first = np.arctan2(c3 * m(2, 1) - s3 * m(2, 2), c3 * m(1, 1) - s3 * m(1, 2))
-    else:  # M = R_x(a) R_y(b) R_z(c)
-        if zero == "first":
-            first = np.where(locked, 0.0, np.arctan2(-m(1, 2), m(2, 2)))
-            s1, c1 = np.sin(first), np.cos(first)
-            third = np.arctan2(c1 * m(1, 0) + s1 * m(2, 0), c1 * m(1, 1) + s1 * m(2, 1))
-        else:
-            third = np.where(locked, 0.0, np.arctan2(-m(0, 1), m(0, 0)))
-            s3, c3 = np.sin(third), np.cos(third)
-            first = np.arctan2(s3 * m(2, 0) + c3 * m(2, 1), s3 * m(1, 0) + c3 * m(1, 1))
-        third = third * third_sign
-    angles = np.stack([first, middle, third], axis=-1)
-    angles += 0.0  # turns every -0.0 into 0.0
-    return angles, locked
-
-
-def lock_message(parsed: Sequence, count: int, total: int, zeroed: int) -> str:
-    """Words for a :class:`GimbalLockWarning`; ``zeroed`` is the position (0 or 2) set to 0."""
-    other = 2 - zeroed
-    singular = "0° or 180°" if parsed.proper else "±90°"
-    return (
-        f"gimbal lock in {count} of {total} rotation(s) for sequence {parsed.seq!r}: the middle "
-        f"angle is {singular}, so angles 1 and 3 turn about the same axis and only their "
-        f"combination is defined; angle {zeroed + 1} was set to 0 and angle {other + 1} "
-        "carries the turn"
-    )
-
-
-def angles_from_matrix(
-    R: ArrayLike,
-    parsed: Sequence,
-    zeroed: int,
-    *,
-    degrees: bool,
-    validate: bool,
-    repair: bool,
-    atol: float,
-    warn: bool,
-    describe: Callable[[int, int], str] | None = None,
-    stacklevel: int = 3,
-) -> NDArray[np.float64]:
-    """The one body behind every matrix-to-angles function of eulerlib.
-
-    ``zeroed`` is the position, in the order the angles are written (0 for the first, 2 for the
-    third), of the angle set to 0 at gimbal lock: :func:`matrix_to_euler` passes the first angle
-    of the intrinsic form, Baker's named function passes bank. ``describe(count, total)`` words
-    the warning (default :func:`lock_message`); ``stacklevel`` is counted from here, so 3 points
-    at whoever called the public function that calls this one.
-    """
-    if zeroed not in (0, 2):
-        raise ValueError(f"only the first (0) or third (2) angle can be zeroed, got {zeroed!r}")
-    lead, blocks = matrix_entry_blocks(R, "R", validate=validate, repair=repair, atol=atol)
-    zero: Literal["first", "third"] = "first" if (zeroed == 0) == parsed.intrinsic else "third"
-    count = math.prod(lead)
-    flat_angles, flat_locked = np.empty((count, 3)), np.empty(count, dtype=bool)
-    for block, entries in blocks:
-        flat_angles[block], flat_locked[block] = intrinsic_angles(entries, parsed, zero)
-    angles, locked = flat_angles.reshape(*lead, 3), flat_locked.reshape(lead)
-    if not parsed.intrinsic:
-        angles = angles[..., ::-1]
-    if warn and np.any(locked):
-        count, total = int(np.count_nonzero(locked)), int(locked.size)
-        words = describe(count, total) if describe else lock_message(parsed, count, total, zeroed)
-        warnings.warn(words, GimbalLockWarning, stacklevel=stacklevel)
-    return np.degrees(angles) if degrees else angles
 
 
 def matrix_to_euler(
     R: ArrayLike,
-    seq: str = "ZYX",
+    seq: str | Convention = "ZYX",
     *,
     degrees: bool = False,
     validate: bool = True,
@@ -333,14 +148,15 @@ def matrix_to_euler(
     atol: float = ROTATION_ATOL,
     warn: bool = True,
 ) -> NDArray[np.float64]:
-    """Euler angles of rotation matrices, in any of the 24 conventions.
+    """Euler angles of rotation matrices, in any of the 24 conventions or a preset.
 
     Parameters
     ----------
     R : array_like, shape (..., 3, 3)
         Rotation matrices. Leading axes are batch axes.
-    seq : str, optional
-        Axis sequence (see :func:`euler_to_matrix`). Default ``"ZYX"``: yaw, pitch, roll.
+    seq : str or Convention, optional
+        Axis sequence or preset (see :func:`euler_to_matrix`). Default ``"ZYX"``: yaw, pitch,
+        roll.
     degrees : bool, optional
         Return degrees instead of radians.
     validate : bool, optional
@@ -348,11 +164,11 @@ def matrix_to_euler(
         check for speed; shape and finiteness are still checked.
     repair : bool, optional
         Replace each matrix by the nearest rotation (SVD) before converting, for matrices that
-        drifted from orthogonality.
+        drifted from orthogonality; a matrix too far from any rotation is refused.
     atol : float, optional
         Tolerance of the rotation check on ``max |R Rᵀ − I|``.
     warn : bool, optional
-        Emit one :class:`GimbalLockWarning` if any matrix is in gimbal lock (default).
+        Emit one :class:`eulerlib.GimbalLockWarning` if any matrix is in gimbal lock (default).
 
     Returns
     -------
@@ -363,16 +179,16 @@ def matrix_to_euler(
     Raises
     ------
     TypeError
-        If ``R`` is not numeric or ``seq`` is not a string.
+        If ``R`` is not real numbers, ``seq`` is not a string, or a flag is not a bool.
     ValueError
         If ``R`` has a wrong shape, non-finite entries, is a reflection or is not orthogonal
-        within ``atol``, or ``seq`` is invalid.
+        within ``atol``, ``seq`` is invalid, or ``atol`` is not a finite number ≥ 0.
 
     Warns
     -----
     GimbalLockWarning
-        Once per call when some matrix is in gimbal lock; the first angle of the intrinsic form
-        (the last angle of an extrinsic sequence) is then set to 0.
+        Once per call when some matrix is in gimbal lock; the angle the convention's policy
+        names (for a bare sequence, the first angle of the intrinsic form) is then set to 0.
 
     Notes
     -----
@@ -399,73 +215,35 @@ def matrix_to_euler(
     >>> caught[0].category.__name__
     'GimbalLockWarning'
     """
-    parsed = parse_sequence(seq)
-    return angles_from_matrix(
-        R,
-        parsed,
-        0 if parsed.intrinsic else 2,
-        degrees=degrees,
-        validate=validate,
-        repair=repair,
-        atol=atol,
-        warn=warn,
-    )
+    convention = get_convention(seq)
+    in_degrees = check_flag(degrees, "degrees")
+    check = rotation_check(validate, repair, atol)
+    warn_lock = check_flag(warn, "warn")
+    matrices = as_matrix_stack(R, "R")
+    return matrices_to_angles(matrices, convention, check, in_degrees, warn_lock)
 
 
-def gimbal_lock_status(
-    R: ArrayLike,
-    seq: str = "ZYX",
-    *,
-    degrees: bool = False,
-    tolerance: float = GIMBAL_LOCK_TOLERANCE,
-    validate: bool = True,
-    repair: bool = False,
-    atol: float = ROTATION_ATOL,
-) -> GimbalLockStatus:
-    """Whether each matrix is in gimbal lock for ``seq``, and how far from it.
-
-    Parameters
-    ----------
-    R : array_like, shape (..., 3, 3)
-        Rotation matrices.
-    seq : str, optional
-        Axis sequence (see :func:`euler_to_matrix`). Default ``"ZYX"``.
-    degrees : bool, optional
-        Give ``distance`` in degrees (and read ``tolerance`` in degrees).
-    tolerance : float, optional
-        A matrix is locked when ``distance <= tolerance``. Default
-        :data:`GIMBAL_LOCK_TOLERANCE` radians, the threshold :func:`matrix_to_euler` uses.
-    validate, repair, atol
-        As in :func:`matrix_to_euler`.
-
-    Returns
-    -------
-    GimbalLockStatus
-        ``(locked, distance)``: boolean(s), and the distance of the middle angle from the
-        nearest singular value (±90° for Tait–Bryan, 0° or 180° for proper Euler).
-
-    Notes
-    -----
-    The distance is computed as ``atan2(cos, |sin|)`` of the middle angle (Tait–Bryan) or
-    ``atan2(|sin|, |cos|)`` (proper Euler), which stays accurate when it is tiny, where
-    ``π/2 − |asin(r31)|`` would be swamped by rounding.
-
-    Examples
-    --------
-    >>> R = euler_to_matrix([[0, 89, 0], [0, 90, 0]], "ZYX", degrees=True)
-    >>> status = gimbal_lock_status(R, "ZYX", degrees=True)
-    >>> status.locked
-    array([False,  True])
-    >>> status.distance.round(9)
-    array([1., 0.])
-    """
-    parsed = parse_sequence(seq)
-    lead, blocks = matrix_entry_blocks(R, "R", validate=validate, repair=repair, atol=atol)
-    flat_distance = np.empty(math.prod(lead))
-    for block, entries in blocks:
-        m, _ = _relabelled(entries, parsed)
-        _, flat_distance[block] = _middle(m, parsed.proper)
-    distance: NDArray[np.float64] = flat_distance.reshape(lead)
+def matrices_to_angles(
+    matrices: NDArray[np.float64],
+    convention: Convention,
+    check: RotationCheck,
+    degrees: bool,
+    warn: bool,
+) -> NDArray[np.float64]:
+    """Body of :func:`matrix_to_euler` for a checked stack of matrices ``(..., 3, 3)``."""
+    parsed = convention.parsed
+    lead = matrices.shape[:-2]
+    count = math.prod(lead)
+    angles, locked = np.empty((count, 3)), np.empty(count, dtype=bool)
+    zero_first = (convention.lock_zeroes == "first") == parsed.intrinsic
+    for block, entries in rotation_entry_blocks(matrices, "R", check):
+        angles[block], locked[block] = intrinsic_angles(
+            entries, parsed, zero_first, GIMBAL_LOCK_TOLERANCE
+        )
+    if warn:
+        warn_if_locked(convention, locked, angles[:, 1])
+    if not parsed.intrinsic:
+        angles = angles[:, ::-1]
     if degrees:
-        distance = np.degrees(distance)
-    return GimbalLockStatus(distance <= tolerance, distance)
+        angles = np.degrees(angles, out=angles if parsed.intrinsic else None)
+    return np.ascontiguousarray(angles).reshape(*lead, 3)

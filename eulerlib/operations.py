@@ -1,8 +1,11 @@
-"""Using rotation matrices: rotate points, undo a rotation, chain rotations, test a matrix.
+"""Using rotation matrices: rotate points, undo a rotation, chain rotations, test and repair.
 
 These are Rose (2015), Part 2, eq 5–8. A rotation matrix acts on a column vector from the
 left (eq 5–6); its inverse is its transpose (eq 7), because its columns are orthonormal; and
-rotations combine by matrix product (eq 8). All functions broadcast over leading axes.
+rotations combine by matrix product (eq 8). A matrix that has drifted from orthogonality (after
+thousands of products, or typed with few digits) is brought back to the nearest rotation by the
+SVD. All functions broadcast over leading axes, and every function that takes rotation matrices
+takes the same ``validate``, ``repair`` and ``atol`` keywords.
 """
 
 from __future__ import annotations
@@ -12,21 +15,30 @@ from functools import reduce
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib._blocks import block_slices
 from eulerlib._validation import (
     ROTATION_ATOL,
-    as_float_array,
-    as_matrices,
+    RotationCheck,
+    as_matrix_stack,
+    as_rotations,
     as_vectors,
+    check_tolerance,
     determinant,
     matrix_entries,
     orthonormality_error,
+    rotation_check,
 )
 
-__all__ = ["compose", "invert", "is_rotation_matrix", "rotate_points"]
+__all__ = ["compose", "invert", "is_rotation_matrix", "nearest_rotation", "rotate_points"]
 
 
 def rotate_points(
-    R: ArrayLike, points: ArrayLike, *, validate: bool = True, atol: float = ROTATION_ATOL
+    R: ArrayLike,
+    points: ArrayLike,
+    *,
+    validate: bool = True,
+    repair: bool = False,
+    atol: float = ROTATION_ATOL,
 ) -> NDArray[np.float64]:
     """Rotate points: ``p₁ = R p₀`` for each point (Rose 2015, eq 5–6).
 
@@ -37,10 +49,9 @@ def rotate_points(
     points : array_like, shape (..., 3)
         Points as rows. Leading axes broadcast against those of ``R``, so one matrix can turn
         many points and many matrices can turn one point.
-    validate : bool, optional
-        Check that ``R`` holds rotations (default).
-    atol : float, optional
-        Tolerance of that check.
+    validate, repair, atol
+        As in :func:`eulerlib.matrix_to_euler`: check that ``R`` holds rotations (default),
+        or use the nearest rotations, and the tolerance of the check.
 
     Returns
     -------
@@ -67,7 +78,7 @@ def rotate_points(
     array([[ 0.,  1.,  0.],
            [-2.,  0.,  0.]])
     """
-    matrices = as_matrices(R, "R", validate=validate, atol=atol)
+    matrices = as_rotations(R, "R", rotation_check(validate, repair, atol))
     vectors = as_vectors(points, "points")
     try:
         np.broadcast_shapes(matrices.shape[:-2], vectors.shape[:-1])
@@ -86,7 +97,7 @@ def rotate_points(
 
 
 def invert(
-    R: ArrayLike, *, validate: bool = True, atol: float = ROTATION_ATOL
+    R: ArrayLike, *, validate: bool = True, repair: bool = False, atol: float = ROTATION_ATOL
 ) -> NDArray[np.float64]:
     """Inverse rotation, which is the transpose (Rose 2015, eq 7).
 
@@ -94,10 +105,9 @@ def invert(
     ----------
     R : array_like, shape (..., 3, 3)
         Rotation matrices.
-    validate : bool, optional
-        Check that ``R`` holds rotations (default); the transpose is the inverse only then.
-    atol : float, optional
-        Tolerance of that check.
+    validate, repair, atol
+        As in :func:`eulerlib.matrix_to_euler`: the transpose is the inverse only of a
+        rotation, so ``R`` is checked by default.
 
     Returns
     -------
@@ -112,13 +122,16 @@ def invert(
     >>> np.allclose(invert(R) @ R, np.eye(3))
     True
     """
-    matrices = as_matrices(R, "R", validate=validate, atol=atol)
+    matrices = as_rotations(R, "R", rotation_check(validate, repair, atol))
     transposed: NDArray[np.float64] = np.swapaxes(matrices, -1, -2).copy()
     return transposed
 
 
 def compose(
-    *rotations: ArrayLike, validate: bool = True, atol: float = ROTATION_ATOL
+    *rotations: ArrayLike,
+    validate: bool = True,
+    repair: bool = False,
+    atol: float = ROTATION_ATOL,
 ) -> NDArray[np.float64]:
     """Combine rotations into one: the left-to-right product ``compose(A, B) == A @ B``.
 
@@ -133,10 +146,8 @@ def compose(
     ----------
     *rotations : array_like, each shape (..., 3, 3)
         At least one stack of rotation matrices; leading axes broadcast.
-    validate : bool, optional
-        Check that every argument holds rotations (default).
-    atol : float, optional
-        Tolerance of that check.
+    validate, repair, atol
+        As in :func:`eulerlib.matrix_to_euler`, for every argument.
 
     Returns
     -------
@@ -168,10 +179,8 @@ def compose(
     """
     if not rotations:
         raise TypeError("compose() needs at least one rotation matrix")
-    matrices = [
-        as_matrices(R, f"rotation {n + 1}", validate=validate, atol=atol)
-        for n, R in enumerate(rotations)
-    ]
+    check = rotation_check(validate, repair, atol)
+    matrices = [as_rotations(R, f"rotation {n + 1}", check) for n, R in enumerate(rotations)]
     try:
         np.broadcast_shapes(*(m.shape for m in matrices))
     except ValueError:
@@ -181,7 +190,7 @@ def compose(
     return product.copy() if len(matrices) == 1 else product
 
 
-def is_rotation_matrix(R: ArrayLike, *, atol: float = ROTATION_ATOL) -> bool | NDArray[np.bool_]:
+def is_rotation_matrix(R: ArrayLike, *, atol: float = ROTATION_ATOL) -> NDArray[np.bool_]:
     """Test whether matrices are rotations: ``R Rᵀ = I`` and ``det R = +1``, within ``atol``.
 
     Parameters
@@ -193,40 +202,104 @@ def is_rotation_matrix(R: ArrayLike, *, atol: float = ROTATION_ATOL) -> bool | N
 
     Returns
     -------
-    bool or ndarray of bool, shape (...)
-        A plain ``bool`` for a single matrix. Matrices with NaN or infinite entries are not
-        rotations.
+    ndarray of bool, shape (...)
+        One answer per matrix (a 0-d array for a single matrix, which works in ``if``).
+        Matrices with NaN, infinite or huge entries are not rotations; no warning is emitted
+        for them.
 
     Raises
     ------
     TypeError
-        If ``R`` is not numeric.
+        If ``R`` is not real numbers, or ``atol`` is not a number.
     ValueError
-        If ``R`` does not have shape ``(..., 3, 3)``.
+        If ``R`` does not have shape ``(..., 3, 3)``, or ``atol`` is not finite and ≥ 0.
 
     Examples
     --------
     >>> import numpy as np
     >>> is_rotation_matrix(np.eye(3))
-    True
-    >>> is_rotation_matrix(np.diag([1.0, 1.0, -1.0]))   # a mirror
+    array(True)
+    >>> bool(is_rotation_matrix(np.diag([1.0, 1.0, -1.0])))   # a mirror
     False
-    >>> is_rotation_matrix(np.stack([np.eye(3), 2 * np.eye(3)]))
-    array([ True, False])
+    >>> is_rotation_matrix(np.stack([np.eye(3), 2 * np.eye(3), np.full((3, 3), np.nan)]))
+    array([ True, False, False])
     """
-    if isinstance(R, (str, bytes)):
-        raise TypeError(f"R must be numbers, got text {R!r}")
-    array = np.asarray(R)
-    if array.dtype.kind not in "iuf":
-        as_float_array(array, "R")  # raises the TypeError with the usual words
-    array = array.astype(np.float64, copy=False)
+    tolerance = check_tolerance(atol, "atol")
+    try:
+        matrices = as_matrix_stack(R, "R")
+    except ValueError as error:
+        if "must be finite" not in str(error):
+            raise
+        matrices = _with_nonfinite(R)
+    lead = matrices.shape[:-2]
+    flat = matrices.reshape(-1, 3, 3)
+    result = np.empty(flat.shape[0], dtype=bool)
+    with np.errstate(over="ignore", invalid="ignore"):
+        for block in block_slices(flat.shape[0]):
+            entries = matrix_entries(flat[block])
+            # comparisons with NaN are False, so NaN, infinite and overflowing matrices fail
+            result[block] = (orthonormality_error(entries) <= tolerance) & (
+                np.abs(determinant(entries) - 1.0) <= tolerance
+            )
+    return result.reshape(lead)
+
+
+def _with_nonfinite(R: ArrayLike) -> NDArray[np.float64]:
+    """``R`` as a float stack of shape (..., 3, 3) that may hold NaN or infinity."""
+    array = np.asarray(R, dtype=np.float64)
     if array.ndim < 2 or array.shape[-2:] != (3, 3):
         raise ValueError(f"R must have shape (..., 3, 3), got shape {array.shape}")
-    finite = np.all(np.isfinite(array), axis=(-2, -1))
-    entries = matrix_entries(np.where(finite[..., np.newaxis, np.newaxis], array, 0.0))
-    result = (
-        finite
-        & (orthonormality_error(entries) <= atol)
-        & (np.abs(determinant(entries) - 1.0) <= atol)
-    )
-    return bool(result) if result.ndim == 0 else result
+    return array
+
+
+def nearest_rotation(R: ArrayLike) -> NDArray[np.float64]:
+    """The rotation nearest to each matrix, in the Frobenius norm (through the SVD).
+
+    This is what ``repair=True`` does in every function that takes rotation matrices.
+
+    Parameters
+    ----------
+    R : array_like, shape (..., 3, 3)
+        Matrices close to rotations: with rounding noise, typed with few digits, or drifted
+        after many products.
+
+    Returns
+    -------
+    ndarray, shape (..., 3, 3)
+        ``U Vᵀ`` from the SVD ``R = U Σ Vᵀ``: the orthogonal matrix nearest to ``R``, which is
+        a rotation when ``R`` is close to one.
+
+    Raises
+    ------
+    TypeError
+        If ``R`` is not real numbers.
+    ValueError
+        If ``R`` has a wrong shape or non-finite entries; if a matrix is singular or its
+        singular values differ from 1 by more than ``eulerlib._validation.REPAIR_LIMIT``
+        (0.1), so that there is no rotation it is close to; or if its nearest orthogonal
+        matrix is a reflection. The message names the matrix and says how far it is.
+
+    Notes
+    -----
+    For ``R = U Σ Vᵀ`` the orthogonal matrix nearest to ``R`` is ``U Vᵀ`` (the orthogonal
+    Procrustes problem). It differs from ``R`` by as much as ``Σ`` differs from the identity,
+    which is why the singular values are what decides whether a matrix can be repaired.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from eulerlib import rot_z
+    >>> R = np.round(rot_z(30, degrees=True), 3)      # typed with three decimals
+    >>> bool(is_rotation_matrix(R))
+    False
+    >>> Q = nearest_rotation(R)
+    >>> bool(is_rotation_matrix(Q, atol=1e-15)), float(np.abs(Q - R).max()) < 1e-3
+    (True, True)
+    >>> nearest_rotation(np.zeros((3, 3)))
+    Traceback (most recent call last):
+    ...
+    ValueError: R is singular (rank 0, singular values 0, 0, 0); only a matrix close to a rotation
+    can be repaired
+    """
+    check = RotationCheck(validate=False, repair=True, atol=0.0)
+    return as_rotations(R, "R", check)

@@ -207,8 +207,11 @@ def test_list_and_help(command: list[str]) -> None:
 @pytest.mark.parametrize(
     ("args", "words"),
     [
-        (["--from", "ZZX", "--to", "rose", "1", "2", "3"], ["unknown convention 'ZZX'", "rose"]),
-        (["--from", "rose", "--to", "rsoe", "1", "2", "3"], ["unknown convention 'rsoe'"]),
+        (
+            ["--from", "ZZX", "--to", "rose", "1", "2", "3"],
+            ["--from 'ZZX' is neither a preset", "rose"],
+        ),
+        (["--from", "rose", "--to", "rsoe", "1", "2", "3"], ["--to 'rsoe' is neither a preset"]),
         (["--from", "rose", "--to", "xyz", "1", "2"], ["expected 3 angles, got 2"]),
         (["--from", "rose", "1", "2", "3", "4"], ["expected 3 angles, got 4"]),
         (["--from", "rose", "--to", "xyz", "1", "two", "3"], ["'two' is not a number"]),

@@ -186,11 +186,12 @@ def test_one_warning_per_call_at_lock(seq, rng):
 
 @pytest.mark.parametrize("seq", ["ZYX", "xyz", "ZXZ", "yzy"])
 def test_warning_names_the_zeroed_angle(seq, rng):
-    with pytest.warns(GimbalLockWarning, match=r"angle \d was set to 0") as record:
+    with pytest.warns(GimbalLockWarning, match=r"\(angle \d\) was set to 0") as record:
         angles = matrix_to_euler(lock_batch(seq, rng)[1], seq)
-    zeroed = int(re.search(r"angle (\d) was set to 0", str(record[0].message)).group(1))
+    zeroed = int(re.search(r"\(angle (\d)\) was set to 0", str(record[0].message)).group(1))
     assert angles[zeroed - 1] == 0.0
     assert zeroed == (1 if seq.isupper() else 3)
+    assert record[0].message.zeroed_position == zeroed - 1
 
 
 @pytest.mark.parametrize("seq", ALL_SEQUENCES)

@@ -151,13 +151,18 @@ def test_compose_matches_euler_angles(rng):
 # --- is_rotation_matrix ----------------------------------------------------------------------
 
 
-def test_is_rotation_matrix_single_is_a_bool(matrices):
-    assert is_rotation_matrix(matrices[0]) is True
-    assert is_rotation_matrix(-np.eye(3)) is False  # a point reflection, det −1
-    assert is_rotation_matrix(np.diag([1.0, -1.0, 1.0])) is False
-    assert is_rotation_matrix(2 * np.eye(3)) is False
-    assert is_rotation_matrix(np.eye(3).tolist()) is True
-    assert is_rotation_matrix(np.eye(3, dtype=int)) is True
+def test_is_rotation_matrix_single_is_a_0d_array(matrices):
+    def answer(R):
+        result = is_rotation_matrix(R)
+        assert isinstance(result, np.ndarray) and result.shape == () and result.dtype == bool
+        return bool(result)
+
+    assert answer(matrices[0]) is True
+    assert answer(-np.eye(3)) is False  # a point reflection, det −1
+    assert answer(np.diag([1.0, -1.0, 1.0])) is False
+    assert answer(2 * np.eye(3)) is False
+    assert answer(np.eye(3).tolist()) is True
+    assert answer(np.eye(3, dtype=int)) is True
 
 
 def test_is_rotation_matrix_batch(matrices):
@@ -171,9 +176,9 @@ def test_is_rotation_matrix_batch(matrices):
 
 def test_is_rotation_matrix_tolerance(matrices):
     noisy = matrices[0] + 1e-9
-    assert is_rotation_matrix(noisy) is True
-    assert is_rotation_matrix(noisy, atol=1e-12) is False
-    assert is_rotation_matrix(np.full((3, 3), np.inf)) is False
+    assert bool(is_rotation_matrix(noisy)) is True
+    assert bool(is_rotation_matrix(noisy, atol=1e-12)) is False
+    assert bool(is_rotation_matrix(np.full((3, 3), np.inf))) is False
 
 
 def test_is_rotation_matrix_bad_shape_and_type():

@@ -7,12 +7,14 @@ from typing import TYPE_CHECKING
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._validation import as_matrices, as_vectors
+from eulerlib._validation import ROTATION_ATOL, RotationCheck, as_rotations, as_vectors
 from eulerlib.elementary import elementary_rotation
 from eulerlib.sequences import parse_sequence
 
 if TYPE_CHECKING:
     from mpl_toolkits.mplot3d.axes3d import Axes3D
+
+_CHECKED = RotationCheck(validate=True, repair=False, atol=ROTATION_ATOL)
 
 AXIS_COLORS = ("tab:red", "tab:green", "tab:blue")
 AXIS_LETTERS = ("x", "y", "z")
@@ -30,7 +32,7 @@ def _one_matrix(R: ArrayLike | None, name: str = "R") -> NDArray[np.float64]:
     """``R`` as a single 3×3 rotation matrix (the identity when ``R`` is None)."""
     if R is None:
         return np.eye(3)
-    matrix = as_matrices(R, name)
+    matrix = as_rotations(R, name, _CHECKED)
     if matrix.shape != (3, 3):
         raise ValueError(f"{name} must be one 3×3 rotation matrix, got shape {matrix.shape}")
     return matrix

@@ -59,7 +59,7 @@ def explorer_state(angles: ArrayLike, seq: str = "ZYX") -> dict[str, Any]:
     recovered angles: (0°, 90°, -20°)
     distance to gimbal lock: 0° (LOCKED: angle 1 set to 0, angle 3 carries the turn)
     """
-    from eulerlib.euler import euler_to_matrix, gimbal_lock_status, matrix_to_euler
+    from eulerlib import euler_to_matrix, gimbal_lock_status, matrix_to_euler
 
     parsed = parse_sequence(seq)
     values = as_vectors(angles, "angles")

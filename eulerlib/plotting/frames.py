@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._validation import as_matrices, as_vectors
+from eulerlib._validation import ROTATION_ATOL, RotationCheck, as_rotations, as_vectors
 from eulerlib.elementary import elementary_rotation
 from eulerlib.sequences import parse_sequence
 
@@ -32,6 +32,8 @@ from eulerlib.plotting._base import (
     _partial_products,
     _style_axes,
 )
+
+_CHECKED = RotationCheck(validate=True, repair=False, atol=ROTATION_ATOL)
 
 __all__ = [
     "draw_frame",
@@ -260,7 +262,7 @@ def plot_frames(
     ['x', "x'", "x''", 'y', "y'", "y''", 'z', "z'", "z''"]
     >>> plt.close(fig)
     """
-    matrices = as_matrices(rotations, "rotations")
+    matrices = as_rotations(rotations, "rotations", _CHECKED)
     if matrices.ndim == 2:
         matrices = matrices[None]
     if matrices.ndim != 3:

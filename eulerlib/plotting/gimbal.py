@@ -151,7 +151,7 @@ def gimbal_ring_points(
 
 def _draw_gimbal(ax: Axes3D, angles: NDArray[np.float64], seq: str) -> None:
     """Rings, pivots, first and third axes and the body frame, angles in radians."""
-    from eulerlib.euler import gimbal_lock_status
+    from eulerlib.gimbal_lock import gimbal_lock_status
 
     axes, values = _intrinsic_steps(angles, seq, False)
     frames = _partial_products(axes, values)

@@ -1,0 +1,298 @@
+"""Gimbal lock: when it happens, how it is reported, and how far a rotation is from it.
+
+When the middle angle of a convention is singular, ±90° for Tait–Bryan sequences and 0° or
+180° for proper Euler sequences, the first and third rotations turn about the same axis and
+the matrix depends on one combination of the two outer angles only (Rose 2015, eq 4; Baker's
+two poles). Which combination follows from relabelling the sequence as x-y-z or x-y-x
+(:mod:`eulerlib._euler_kernels`): with the intrinsic angles ``(a, b, c)``,
+
+* x-y-z at ``b = +90°``: ``R_x(a) R_y(90°) = R_y(90°) R_z(a)``, so the matrix depends on
+  ``a + σ c`` only, and at ``b = −90°`` on ``σ c − a`` (``σ = ±1`` is the sign with which the
+  third axis of the sequence is the relabelled z);
+* x-y-x at ``b = 0``: ``R_x(a + c)``; at ``b = 180°``: ``R_y(180°) R_x(c − a)``.
+
+So at lock one outer angle is free. The convention's policy (:attr:`Convention.lock_zeroes`,
+see :mod:`eulerlib.conventions`) sets it to 0 and the other carries the turn. A matrix counts
+as locked when its middle angle lies within :data:`GIMBAL_LOCK_TOLERANCE` of the singular value.
+Each call that meets a locked matrix emits one :class:`GimbalLockWarning`, which carries the
+facts as attributes and words them itself; :func:`gimbal_lock_status` returns the same test
+as data.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import sys
+import warnings
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from eulerlib._euler_kernels import frame, lock_distance
+from eulerlib._validation import (
+    ROTATION_ATOL,
+    as_matrix_stack,
+    check_flag,
+    check_tolerance,
+    rotation_check,
+    rotation_entry_blocks,
+)
+from eulerlib.conventions import Convention, get_convention
+
+__all__ = [
+    "GIMBAL_LOCK_TOLERANCE",
+    "GimbalLockStatus",
+    "GimbalLockWarning",
+    "gimbal_lock_status",
+    "lock_combination",
+]
+
+#: A matrix is in gimbal lock when its middle angle is within this many radians of the
+#: singular value (±π/2 for Tait–Bryan, 0 or π for proper Euler). 2⁻⁴⁹ ≈ 1.8e-15 is eight units
+#: in the last place of 1: about four times the distance that ordinary rounding noise puts
+#: between a lock matrix and the lock (measured on ``Q @ Q.T @ R``), and small enough that
+#: setting the first angle to 0 moves no entry of the rebuilt matrix by more than 2 × 2⁻⁴⁹.
+GIMBAL_LOCK_TOLERANCE = 2.0**-49
+
+
+def lock_combination(convention: Convention | str, pole: float) -> tuple[int, str]:
+    """The combination of the outer angles that a locked matrix still defines.
+
+    Parameters
+    ----------
+    convention : Convention or str
+        A convention or anything :func:`eulerlib.get_convention` accepts.
+    pole : {90, -90, 0, 180}
+        The singular middle angle, in degrees: ±90 for Tait–Bryan, 0 or 180 for proper Euler.
+
+    Returns
+    -------
+    sign : int
+        ``+1`` or ``-1``: at this pole the matrix depends on ``third + sign · first`` only,
+        with first and third in argument order.
+    words : str
+        The same, with the convention's angle names, for example ``"roll − yaw"``.
+
+    Examples
+    --------
+    >>> lock_combination("rose", 90)
+    (-1, 'roll - yaw')
+    >>> lock_combination("rose", -90)
+    (1, 'yaw + roll')
+    >>> lock_combination("ZXZ", 180)
+    (-1, "z'' - z")
+    """
+    chosen = get_convention(convention, "convention")
+    parsed = chosen.parsed
+    if parsed.proper:
+        if pole not in (0, 180):
+            raise ValueError(f"pole must be 0 or 180 for {chosen.seq!r}, got {pole!r}")
+        sign = 1 if pole == 0 else -1
+    else:
+        if pole not in (90, -90):
+            raise ValueError(f"pole must be 90 or -90 for {chosen.seq!r}, got {pole!r}")
+        sign = int(frame(parsed)[1][2]) * (1 if pole > 0 else -1)
+    # in intrinsic order the matrix depends on third + sign·first; written order reverses an
+    # extrinsic sequence, which swaps the roles of the two names but not the sign
+    first, _, third = chosen.angle_names
+    if sign > 0:
+        return 1, f"{first} + {third}"
+    if parsed.intrinsic:
+        return -1, f"{third} - {first}"
+    return -1, f"{first} - {third}"
+
+
+class GimbalLockWarning(UserWarning):
+    """Some matrices were in gimbal lock, and one outer angle was set to 0 for each of them.
+
+    Attributes
+    ----------
+    convention : Convention
+        The convention the angles were asked in (for a bare ``seq``, its own convention).
+    seq : str
+        Its axis sequence.
+    count, total : int
+        How many of how many rotations were locked.
+    zeroed : str
+        Name of the angle set to 0 (``convention.zeroed_name``).
+    zeroed_position : int
+        Its position in argument order: 0 (the first angle) or 2 (the third).
+    carrier : str
+        Name of the angle that carries the whole turn.
+    combinations : dict
+        For each pole met (the singular middle angle in degrees: 90, -90, 0 or 180), the
+        combination of the outer angles that stays defined there, in words.
+
+    Examples
+    --------
+    >>> import warnings, eulerlib
+    >>> R = eulerlib.euler_to_matrix([30, 90, 10], "rose", degrees=True)
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     _ = eulerlib.matrix_to_euler(R, "rose")
+    >>> facts = caught[0].message
+    >>> facts.count, facts.zeroed, facts.carrier, facts.combinations
+    (1, 'yaw', 'roll', {90: 'roll - yaw'})
+    >>> print(facts)
+    gimbal lock in 1 of 1 rotation(s) for 'rose' (seq 'ZYX'): pitch is at 90°, so yaw and roll
+    turn about the same axis and only roll - yaw is defined; yaw (angle 1) was set to 0 and roll
+    carries the whole turn
+    """
+
+    def __init__(
+        self, convention: Convention, count: int, total: int, poles: tuple[int, ...]
+    ) -> None:
+        self.convention = convention
+        self.seq = convention.seq
+        self.count = count
+        self.total = total
+        self.zeroed = convention.zeroed_name
+        self.zeroed_position = 0 if convention.lock_zeroes == "first" else 2
+        self.carrier = convention.carrier_name
+        self.poles = poles
+        self.combinations = {pole: lock_combination(convention, pole)[1] for pole in poles}
+        super().__init__(self._words())
+
+    def _words(self) -> str:
+        chosen = self.convention
+        label = (
+            repr(chosen.name)
+            if chosen.name == chosen.seq
+            else (f"{chosen.name!r} (seq {chosen.seq!r})")
+        )
+        first, middle, third = chosen.angle_names
+        defined = "; ".join(
+            f"{combination} at {pole}°" if len(self.combinations) > 1 else combination
+            for pole, combination in self.combinations.items()
+        )
+        poles = " or ".join(f"{pole}°" for pole in self.combinations)
+        return (
+            f"gimbal lock in {self.count} of {self.total} rotation(s) for {label}: {middle} is "
+            f"at {poles}, so {first} and {third} turn about the same axis and only {defined} "
+            f"is defined; {self.zeroed} (angle {self.zeroed_position + 1}) was set to 0 and "
+            f"{self.carrier} carries the whole turn"
+        )
+
+    def __reduce__(self) -> tuple[object, ...]:  # so that a warning can be pickled and rebuilt
+        return (type(self), (self.convention, self.count, self.total, self.poles))
+
+
+_PACKAGE = os.path.dirname(os.path.abspath(__file__)) + os.sep
+
+
+def _stacklevel_outside_package() -> int:
+    """``stacklevel`` for :func:`warnings.warn` that points at the first caller outside eulerlib."""
+    level, caller = 1, sys._getframe(1)
+    while caller is not None and os.path.abspath(caller.f_code.co_filename).startswith(_PACKAGE):
+        caller = caller.f_back  # type: ignore[assignment]
+        level += 1
+    return level
+
+
+def warn_if_locked(
+    convention: Convention, locked: NDArray[np.bool_], middle: NDArray[np.float64]
+) -> None:
+    """Emit one :class:`GimbalLockWarning` if any rotation is locked.
+
+    ``middle`` holds the middle angles in radians, the same shape as ``locked``.
+    """
+    count = int(np.count_nonzero(locked))
+    if not count:
+        return
+    at_lock = middle[locked]
+    extremes = (float(at_lock.min()), float(at_lock.max()))
+    if convention.parsed.proper:
+        found = {0 if angle < math.pi / 2 else 180 for angle in extremes}
+    else:
+        found = {90 if angle > 0 else -90 for angle in extremes}
+    order = (90, -90, 0, 180)
+    poles = tuple(pole for pole in order if pole in found)
+    warning = GimbalLockWarning(convention, count, int(locked.size), poles)
+    warnings.warn(warning, stacklevel=_stacklevel_outside_package())
+
+
+class GimbalLockStatus(NamedTuple):
+    """Gimbal lock as data, one entry per rotation.
+
+    Attributes
+    ----------
+    locked : ndarray of bool
+        True where the middle angle is within the tolerance of its singular value.
+    distance : ndarray of float
+        How far the middle angle is from the nearest singular value (radians, or degrees if
+        requested); 0 at lock, at most π/2.
+    """
+
+    locked: NDArray[np.bool_]
+    distance: NDArray[np.float64]
+
+
+def gimbal_lock_status(
+    R: ArrayLike,
+    seq: str | Convention = "ZYX",
+    *,
+    degrees: bool = False,
+    tolerance: float | None = None,
+    validate: bool = True,
+    repair: bool = False,
+    atol: float = ROTATION_ATOL,
+) -> GimbalLockStatus:
+    """Whether each matrix is in gimbal lock for ``seq``, and how far from it.
+
+    Parameters
+    ----------
+    R : array_like, shape (..., 3, 3)
+        Rotation matrices.
+    seq : str or Convention, optional
+        Axis sequence or preset (see :func:`eulerlib.euler_to_matrix`). Default ``"ZYX"``.
+    degrees : bool, optional
+        Give ``distance`` in degrees, and read ``tolerance`` in degrees.
+    tolerance : float, optional
+        A matrix is locked when ``distance <= tolerance``. Default:
+        :data:`GIMBAL_LOCK_TOLERANCE` radians, the threshold every conversion uses, whatever
+        the unit of ``distance``.
+    validate, repair, atol
+        As in :func:`eulerlib.matrix_to_euler`.
+
+    Returns
+    -------
+    GimbalLockStatus
+        ``(locked, distance)``, arrays of the leading shape of ``R`` (0-d for one matrix): the
+        flags, and the distance of the middle angle from the nearest singular value (±90° for
+        Tait–Bryan, 0° or 180° for proper Euler).
+
+    Raises
+    ------
+    TypeError, ValueError
+        For bad input, as :func:`eulerlib.matrix_to_euler`, or a tolerance that is not a
+        finite number ≥ 0.
+
+    Examples
+    --------
+    >>> from eulerlib import euler_to_matrix
+    >>> R = euler_to_matrix([[0, 89, 0], [0, 90, 0]], "ZYX", degrees=True)
+    >>> status = gimbal_lock_status(R, "ZYX", degrees=True)
+    >>> status.locked
+    array([False,  True])
+    >>> status.distance.round(9)
+    array([1., 0.])
+    """
+    convention = get_convention(seq)
+    in_degrees = check_flag(degrees, "degrees")
+    limit = GIMBAL_LOCK_TOLERANCE if tolerance is None else check_tolerance(tolerance, "tolerance")
+    if tolerance is not None and in_degrees:
+        limit = math.radians(limit)
+    check = rotation_check(validate, repair, atol)
+    matrices = as_matrix_stack(R, "R")
+    lead = matrices.shape[:-2]
+    flat_distance = np.empty(math.prod(lead))
+    parsed = convention.parsed
+    for block, entries in rotation_entry_blocks(matrices, "R", check):
+        flat_distance[block] = lock_distance(entries, parsed)
+    distance = flat_distance.reshape(lead)
+    locked = np.asarray(distance <= limit)  # 0-d arrays, not NumPy scalars, for one matrix
+    if in_degrees:
+        np.degrees(distance, out=distance)
+    return GimbalLockStatus(locked, distance)
