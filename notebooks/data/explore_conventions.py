@@ -285,7 +285,11 @@ def gimbal_lock(rec: Recording, attitude_rate: float) -> None:
         f"stored pitch {pitch[closest]:.5f}°, roll {roll[closest]:.4f}°, yaw {yaw[closest]:.4f}°"
     )
     _, words = eulerlib.lock_combination("rose", 90 if pitch[closest] > 0 else -90)
-    print(f"at this pole (Rose's yaw-pitch-roll, the same sequence) M depends on {words} only")
+    print(f"at this pole (Rose's yaw-pitch-roll, the same sequence) M depends on {words} only;")
+    print(
+        "yaw and roll respond to the matrix entries 1/cos(pitch) = "
+        f"{1 / np.cos(np.radians(pitch[closest])):.0f} times as strongly as at pitch 0 there"
+    )
     near = np.flatnonzero(distance < NEAR_LOCK_DEG)
     if not len(near):
         near = np.array([closest])
@@ -321,9 +325,11 @@ def gimbal_lock(rec: Recording, attitude_rate: float) -> None:
         f"in {np.count_nonzero(same_sign)} of them"
     )
     ours = eulerlib.matrix_to_euler(rec.matrix[near], "ZYX", degrees=True)[:, ::-1]
+    locked = eulerlib.gimbal_lock_status(rec.matrix[near], "ZYX").locked
     print(
-        "eulerlib's angles of M vs the stored ones within the near-lock samples: max "
-        f"{np.abs(wrap_degrees(ours - rec.euler[near])).max():.1e}°"
+        f"eulerlib's angles of M vs the stored ones in the {len(near)} samples within "
+        f"{NEAR_LOCK_DEG:g}°: max {np.abs(wrap_degrees(ours - rec.euler[near])).max():.1e}°; "
+        f"locked by GIMBAL_LOCK_TOLERANCE: {np.count_nonzero(locked)}"
     )
     print("    t [s]   dist°     roll°    pitch°      yaw°   roll-yaw°  turned°")
     for j in range(max(closest - 8, 0), min(closest + 9, len(distance))):
@@ -356,6 +362,10 @@ def gyroscope(rec: Recording, inertial_rate: float, attitude_rate: float) -> Non
         f"values are whole multiples of 1/16 deg/s: {bool(np.all(steps == np.round(steps)))}; "
         f"largest |component| {np.abs(rec.gyroscope).max():g} deg/s (GyroscopeFullScale "
         f"{rec.registers['GyroscopeFullScale']:.0f}: ±2000 deg/s)"
+    )
+    print(
+        f"accelerometer: largest |component| {np.abs(rec.accelerometer).max():.2f} g "
+        f"(AccelerometerFullScale {rec.registers['AccelerometerFullScale']:.0f}: ±8 g)"
     )
     attitude = Rotation.from_matrix(rec.matrix)
     rates = np.radians(rec.gyroscope)  # the header says deg/s
