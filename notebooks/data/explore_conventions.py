@@ -181,12 +181,14 @@ def frame_direction(rec: Recording) -> None:
         print(f"{name:5} mean {np.round(turned.mean(axis=0), 3)}, std {np.round(turned.std(0), 3)}")
     magnet = at_attitude_samples(rec, rec.magnetometer)
     field = np.einsum("nij,nj->ni", rec.matrix, magnet)
-    bearing = np.degrees(np.arctan2(field[:, 1], field[:, 0]))
+    mean_bearing = np.degrees(np.arctan2(field[:, 1].mean(), field[:, 0].mean()))
+    spread = wrap_degrees(np.degrees(np.arctan2(field[:, 1], field[:, 0])) - mean_bearing)
     size = np.linalg.norm(magnet, axis=1)
     print(
-        f"magnetometer turned by M: horizontal part at {np.median(bearing):.1f}° from earth x "
-        f"(median; 5-95 % {np.percentile(bearing, 5):.1f}° to {np.percentile(bearing, 95):.1f}°),"
-        f" vertical {np.median(field[:, 2]):.3f} G; |m| from {size.min():.2f} to {size.max():.2f} G"
+        f"magnetometer turned by M: horizontal part of the mean field at {mean_bearing:.1f}° "
+        f"from earth x, 5-95 % of the samples within {np.percentile(spread, 5):+.1f}° to "
+        f"{np.percentile(spread, 95):+.1f}° of that; vertical part {field[:, 2].mean():.3f} G; "
+        f"|m| from {size.min():.2f} to {size.max():.2f} G"
     )
 
 
