@@ -1,13 +1,24 @@
-"""Which entries of a matrix give back the angles, read off the symbolic matrix."""
+"""Reading the angles back: which entries of the matrix give each angle, found in the algebra.
+
+One entry of an Euler-angle matrix depends on the middle angle alone (``±sin β`` for
+Tait–Bryan sequences, ``cos β`` for proper Euler sequences); two entries in its row and two in
+its column are a common factor times the sine and cosine of the first or of the third angle.
+:func:`extraction_relations` finds those entries in the symbolic matrix, by the symbols they
+contain, and states the ``atan2`` formulas they give (Rose 2015, Part 2, eq 3; Baker's three
+formulas), valid wherever the common factor is positive.
+"""
 
 from __future__ import annotations
 
-from collections.abc import Sequence as SequenceABC
 from typing import Any, NamedTuple
 
 import sympy as sp
 
-from eulerlib.symbolic.euler import _angles, euler_matrix
+from eulerlib.conventions import Convention, get_convention
+from eulerlib.symbolic._arguments import as_distinct_symbols
+from eulerlib.symbolic.euler import euler_product, refuse_convention_first
+
+__all__ = ["ExtractionRelations", "extraction_relations"]
 
 
 class ExtractionRelations(NamedTuple):
@@ -18,11 +29,11 @@ class ExtractionRelations(NamedTuple):
     Attributes
     ----------
     seq : str
-        The sequence.
+        The axis sequence (of the preset, when one was given).
     angles : tuple of sympy expressions
         The angle symbols ``(first, middle, third)`` used in the expressions below.
     matrix : sympy.Matrix
-        ``euler_matrix(seq, angles)``.
+        ``euler_matrix(angles, seq)``.
     middle_entry : tuple of int
         The one entry that depends on the middle angle alone.
     middle_value : sympy expression
@@ -40,6 +51,17 @@ class ExtractionRelations(NamedTuple):
         ``sympy.MatrixSymbol``), valid whenever ``scale > 0``, which is the range of the middle
         angle eulerlib returns: ``[-π/2, π/2]`` (Tait–Bryan) or ``[0, π]`` (proper Euler). Use
         ``sympy.lambdify(R, formula)`` to evaluate one on a numeric matrix.
+
+    Examples
+    --------
+    >>> import numpy as np, sympy as sp
+    >>> from eulerlib import euler_to_matrix
+    >>> rel = extraction_relations(sp.symbols("w v u", real=True), "ZYX")
+    >>> rel.scale
+    cos(v)
+    >>> yaw = sp.lambdify(sp.MatrixSymbol("R", 3, 3), rel.formulas[0])
+    >>> round(float(np.degrees(yaw(euler_to_matrix([30, 20, 10], "ZYX", degrees=True)))), 9)
+    30.0
     """
 
     seq: str
@@ -76,7 +98,7 @@ def _sine_cosine(
     return (first, second), (int(sine_sign), int(cosine_sign))
 
 
-def extraction_relations(seq: str, angles: SequenceABC[Any] | None = None) -> ExtractionRelations:
+def extraction_relations(angles: Any, seq: str | Convention) -> ExtractionRelations:
     """Find the entries of the symbolic matrix that give back each angle, and the formulas.
 
     The relations are read off the symbolic matrix itself: the middle entry is the only one
@@ -85,11 +107,11 @@ def extraction_relations(seq: str, angles: SequenceABC[Any] | None = None) -> Ex
 
     Parameters
     ----------
-    seq : str
-        One of the 24 axis sequences.
-    angles : sequence of 3 sympy symbols, optional
-        Symbols for the angles (they must be three distinct symbols). Default
-        :func:`euler_symbols`.
+    angles : sequence of 3 sympy.Symbol
+        Three distinct symbols for the angles, in the order of the letters of ``seq``, for
+        example ``sp.symbols("w v u", real=True)`` or :func:`euler_symbols`.
+    seq : str or Convention
+        One of the 24 axis sequences, or a preset such as ``"rose"``.
 
     Returns
     -------
@@ -99,7 +121,8 @@ def extraction_relations(seq: str, angles: SequenceABC[Any] | None = None) -> Ex
     Raises
     ------
     TypeError, ValueError
-        If ``seq`` is invalid or ``angles`` are not three distinct symbols.
+        If ``seq`` is neither a sequence nor a preset, or ``angles`` are not three distinct
+        symbols.
 
     Notes
     -----
@@ -111,7 +134,7 @@ def extraction_relations(seq: str, angles: SequenceABC[Any] | None = None) -> Ex
     --------
     >>> import sympy as sp
     >>> w, v, u = sp.symbols("w v u", real=True)
-    >>> rel = extraction_relations("ZYX", (w, v, u))
+    >>> rel = extraction_relations((w, v, u), "ZYX")
     >>> rel.middle_entry, rel.middle_value
     ((2, 0), -sin(v))
     >>> rel.first_entries, rel.first_values
@@ -122,10 +145,10 @@ def extraction_relations(seq: str, angles: SequenceABC[Any] | None = None) -> Ex
     atan2(-R[2, 0], sqrt(R[2, 1]**2 + R[2, 2]**2))
     atan2(R[2, 1], R[2, 2])
     """
-    parsed, (a, b, c) = _angles(seq, angles)
-    if not all(isinstance(s, sp.Symbol) for s in (a, b, c)) or len({a, b, c}) != 3:
-        raise ValueError(f"angles must be three distinct SymPy symbols, got {(a, b, c)}")
-    M = euler_matrix(seq, (a, b, c))
+    refuse_convention_first(angles)
+    parsed = get_convention(seq).parsed
+    a, b, c = as_distinct_symbols(angles, "angles", 3)
+    M = euler_product(parsed, (a, b, c))
     (middle_entry,) = _entries_with(M, {b})
     middle_value = M[middle_entry]
     scale = sp.sin(b) if parsed.proper else sp.cos(b)
@@ -145,7 +168,7 @@ def extraction_relations(seq: str, angles: SequenceABC[Any] | None = None) -> Ex
         middle_sign = 1 if middle_value == sp.sin(b) else -1
         middle_formula = sp.atan2(middle_sign * R[middle_entry], hypot)
     return ExtractionRelations(
-        seq=seq,
+        seq=parsed.seq,
         angles=(a, b, c),
         matrix=M,
         middle_entry=middle_entry,

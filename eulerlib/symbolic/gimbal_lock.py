@@ -1,90 +1,114 @@
-"""The matrix at gimbal lock, written with the one combination of outer angles it keeps."""
+"""The matrix at gimbal lock, written with the one combination of outer angles it keeps.
+
+When the middle angle is singular (±90° for a Tait–Bryan sequence, 0° or 180° for a proper
+Euler sequence) the first and third rotations turn about the same line, and the matrix depends
+on one sum or difference of the outer angles only (Rose 2015, Part 2, eq 4; Baker's two poles).
+:func:`gimbal_lock_matrix` finds which one in the algebra and writes the matrix in that form,
+as the convention's lock policy does with numbers: the angle it sets to 0 is 0, and the other
+carries the combination (see :mod:`eulerlib.conventions`).
+"""
 
 from __future__ import annotations
 
-from collections.abc import Sequence as SequenceABC
 from typing import Any
 
+import numpy as np
 import sympy as sp
 
-from eulerlib.sequences import Sequence
-from eulerlib.symbolic.euler import _angles, euler_matrix
+from eulerlib.conventions import Convention, get_convention
+from eulerlib.symbolic._arguments import as_expressions
+from eulerlib.symbolic.euler import euler_product, refuse_convention_first
+
+__all__ = ["gimbal_lock_matrix"]
+
+_POLES = {90: sp.pi / 2, -90: -sp.pi / 2, 0: sp.S.Zero, 180: sp.pi}
 
 
-def _singular_middle(parsed: Sequence, middle: Any) -> Any:
-    value = sp.sympify(middle)
-    if parsed.proper:
-        choices = {1: 0, -1: sp.pi, 0: 0, sp.pi: sp.pi}
-        expected = "1 or 0 (middle angle 0), -1 or pi (middle angle pi)"
-    else:
-        choices = {1: sp.pi / 2, -1: -sp.pi / 2, sp.pi / 2: sp.pi / 2, -sp.pi / 2: -sp.pi / 2}
-        expected = "1 or pi/2 (middle angle +90°), -1 or -pi/2 (middle angle -90°)"
-    for key, angle in choices.items():
-        if sp.simplify(value - key) == 0:
-            return angle
-    kind = "proper Euler" if parsed.proper else "Tait–Bryan"
-    raise ValueError(
-        f"middle must name a singular middle angle of the {kind} sequence {parsed.seq!r}: "
-        f"{expected}; got {middle!r}"
-    )
+def singular_middle(pole: object, convention: Convention) -> Any:
+    """The exact middle angle (radians) of a pole given in degrees, checked for the sequence."""
+    allowed = (0, 180) if convention.parsed.proper else (90, -90)
+    words = f"{allowed[0]} or {allowed[1]} (the middle angle at lock, in degrees)"
+    number_types = (int, float, np.integer, np.floating, sp.Number)
+    if isinstance(pole, (bool, np.bool_)) or not isinstance(pole, number_types):
+        raise TypeError(
+            f"pole must be {words} for {convention.seq!r}, got {pole!r} ({type(pole).__name__})"
+        )
+    if pole not in allowed:
+        raise ValueError(f"pole must be {words} for {convention.seq!r}, got {pole!r}")
+    return _POLES[int(pole)]
 
 
-def gimbal_lock_matrix(seq: str, middle: Any = 1, angles: SequenceABC[Any] | None = None) -> Any:
+def _same_matrix(A: Any, B: Any) -> bool:
+    """Whether two matrices of sines and cosines agree once every sum inside them is expanded."""
+    difference = (A - B).applyfunc(lambda entry: sp.expand(sp.expand_trig(entry)))
+    return bool(difference.is_zero_matrix)
+
+
+def gimbal_lock_matrix(angles: Any, seq: str | Convention, *, pole: float) -> Any:
     """The matrix at gimbal lock, written with the one combination of outer angles it depends on.
 
     Parameters
     ----------
-    seq : str
-        One of the 24 axis sequences.
-    middle : {1, -1} or the singular angle itself, optional
-        Which singular middle angle: for a Tait–Bryan sequence ``1`` (or ``pi/2``) means +90°
-        and ``-1`` (or ``-pi/2``) means −90°; for a proper Euler sequence ``1`` (or ``0``)
-        means 0 and ``-1`` (or ``pi``) means 180°. In both cases ``middle = ±1`` is the value
-        of the middle entry's sine (Tait–Bryan) or cosine (proper Euler). Default ``1``.
-    angles : sequence of 3 sympy expressions, optional
-        Angle symbols; the middle one is replaced by the singular value. Default
-        :func:`euler_symbols`.
+    angles : sequence of 2 SymPy expressions or numbers
+        The two **outer** angles, first and third in the order of ``seq``; the middle one is
+        the pole. With Rose's yaw ``w``, pitch and roll ``u``: ``(w, u)``.
+    seq : str or Convention
+        One of the 24 axis sequences, or a preset such as ``"rose"`` or ``"baker"``. Its lock
+        policy decides which outer angle the result writes as 0.
+    pole : {90, -90, 0, 180}
+        The singular middle angle in degrees, as for :func:`eulerlib.lock_combination`:
+        90 or −90 for a Tait–Bryan sequence, 0 or 180 for a proper Euler sequence.
 
     Returns
     -------
     sympy.Matrix, shape (3, 3)
-        The matrix, whose entries involve the outer angles only through one sum or difference
-        (for example ``sin(u - w)`` for ``"ZYX"`` at pitch +90°, Rose (2015), Part 2, eq 4).
+        ``euler_matrix`` at the pole, with the outer angle the convention zeroes at lock set to
+        0 and the other replaced by the combination it carries: its entries involve the outer
+        angles only through one sum or difference (for example ``sin(u - w)`` for ``"ZYX"``
+        at pitch +90°, Rose (2015), Part 2, eq 4).
 
     Raises
     ------
     TypeError, ValueError
-        If ``seq`` or ``angles`` are invalid, or ``middle`` is not a singular value.
+        If ``angles`` is not two expressions or numbers, ``seq`` is neither a sequence nor a
+        preset, or ``pole`` is not a singular middle angle of the sequence.
 
     Notes
     -----
-    At lock the first and third rotations turn about the same line, so the matrix equals the
-    one with the first angle of the intrinsic form set to 0 and the other outer angle replaced
-    by the combination (eulerlib's lock policy). The combination's sign is found by comparing
-    the two candidates, ``third + first`` and ``third − first``, with the substituted matrix
-    after expanding the trigonometric functions of the sums, and is then checked exactly.
+    At the pole the matrix depends on ``third + σ·first`` for one sign ``σ``. Writing it with
+    the zeroed angle 0 and the carrier replaced by ``carrier ± zeroed`` gives two candidates;
+    the one equal to the matrix at the pole, once every sine and cosine of a sum is expanded,
+    is returned. The sign found here is the one :func:`eulerlib.lock_combination` states.
 
     Examples
     --------
     >>> import sympy as sp
-    >>> w, v, u = sp.symbols("w v u", real=True)
-    >>> gimbal_lock_matrix("ZYX", 1, (w, v, u))
+    >>> w, u = sp.symbols("w u", real=True)   # Rose's yaw and roll
+    >>> gimbal_lock_matrix((w, u), "rose", pole=90)
     Matrix([
     [ 0, sin(u - w),  cos(u - w)],
     [ 0, cos(u - w), -sin(u - w)],
     [-1,          0,           0]])
+    >>> h, b = sp.symbols("h b", real=True)   # Baker's heading and bank; bank is zeroed
+    >>> gimbal_lock_matrix((h, b), "baker", pole=90)
+    Matrix([
+    [0, -cos(b + h), sin(b + h)],
+    [1,           0,          0],
+    [0,  sin(b + h), cos(b + h)]])
     """
-    parsed, (a, _, c) = _angles(seq, angles)
-    singular = _singular_middle(parsed, middle)
-    locked = euler_matrix(seq, (a, singular, c))
-    # the first angle of the intrinsic form is a for intrinsic sequences, c for extrinsic ones
-    zeroed, carrier = (a, c) if parsed.intrinsic else (c, a)
+    refuse_convention_first(angles)
+    convention = get_convention(seq)
+    parsed = convention.parsed
+    first, third = as_expressions(angles, "angles", 2, "outer angles (first, third)")
+    middle = singular_middle(pole, convention)
+    at_pole = euler_product(parsed, (first, middle, third))
+    zeroes_first = convention.lock_zeroes == "first"
+    zeroed, carrier = (first, third) if zeroes_first else (third, first)
     for combination in (carrier - zeroed, carrier + zeroed):
-        values = (0, singular, combination) if parsed.intrinsic else (combination, singular, 0)
-        candidate = euler_matrix(seq, values)
-        difference = (candidate - locked).applyfunc(lambda e: sp.expand(sp.expand_trig(e)))
-        if difference.is_zero_matrix:
+        values = (0, middle, combination) if zeroes_first else (combination, middle, 0)
+        candidate = euler_product(parsed, values)
+        if _same_matrix(candidate, at_pole):
             return candidate
-    raise AssertionError(  # pragma: no cover - at lock one of the two always matches
-        f"no sum or difference form found for {seq!r} at middle angle {singular}"
+    raise AssertionError(  # pragma: no cover - at a pole one of the two always matches
+        f"no sum or difference form found for {parsed.seq!r} at pole {pole}"
     )
