@@ -85,8 +85,8 @@ def sequence_of(count: int) -> list[Any]:
 
 
 KINDS: dict[tuple[str, str], list[Any]] = {}
-for _name, _call in VALID_CALLS.items():
-    for _parameter in _call:
+for _name, _function in FUNCTIONS.items():
+    for _parameter in inspect.signature(_function).parameters:
         if _parameter in ("angle",):
             KINDS[_name, _parameter] = BAD["expression"]
         elif _parameter == "axis":
@@ -104,7 +104,7 @@ for _name, _call in VALID_CALLS.items():
         elif _parameter == "t":
             KINDS[_name, _parameter] = BAD["symbol"]
         else:
-            KINDS[_name, _parameter] = BAD[_parameter]
+            KINDS[_name, _parameter] = BAD.get(_parameter, [])
 CASES = [
     pytest.param(name, parameter, index, id=f"{name}-{parameter}-{index}")
     for (name, parameter), values in KINDS.items()
@@ -121,6 +121,8 @@ def test_every_public_function_has_a_valid_call_here() -> None:
     for name, kwargs in VALID_CALLS.items():
         FUNCTIONS[name](**kwargs)
         assert set(kwargs) | {"frame"} >= set(inspect.signature(FUNCTIONS[name]).parameters)
+    unknown = [key for key, values in KINDS.items() if not values]
+    assert not unknown, f"no bad values listed for {unknown}"
 
 
 def test_everything_public_is_documented_with_an_example() -> None:

@@ -16,26 +16,27 @@ import numpy as np
 import sympy as sp
 
 from eulerlib.conventions import Convention, get_convention
+from eulerlib.gimbal_lock import lock_combination
 from eulerlib.symbolic._arguments import as_expressions
 from eulerlib.symbolic.euler import euler_product, refuse_convention_first
 
 __all__ = ["gimbal_lock_matrix"]
 
-_POLES = {90: sp.pi / 2, -90: -sp.pi / 2, 0: sp.S.Zero, 180: sp.pi}
+_NUMBERS = (int, float, np.integer, np.floating, sp.Number)
 
 
 def singular_middle(pole: object, convention: Convention) -> Any:
     """The exact middle angle (radians) of a pole given in degrees, checked for the sequence."""
-    allowed = (0, 180) if convention.parsed.proper else (90, -90)
-    words = f"{allowed[0]} or {allowed[1]} (the middle angle at lock, in degrees)"
-    number_types = (int, float, np.integer, np.floating, sp.Number)
-    if isinstance(pole, (bool, np.bool_)) or not isinstance(pole, number_types):
+    if isinstance(pole, (bool, np.bool_)) or not isinstance(pole, _NUMBERS):
         raise TypeError(
-            f"pole must be {words} for {convention.seq!r}, got {pole!r} ({type(pole).__name__})"
+            "pole must be a number of degrees, the middle angle at lock (90 or -90 for a "
+            f"Tait–Bryan sequence, 0 or 180 for a proper Euler one), got {pole!r} "
+            f"({type(pole).__name__})"
         )
-    if pole not in allowed:
-        raise ValueError(f"pole must be {words} for {convention.seq!r}, got {pole!r}")
-    return _POLES[int(pole)]
+    degrees = float(pole)
+    number = int(degrees) if degrees.is_integer() else degrees
+    lock_combination(convention, number)  # which poles the sequence has is checked there
+    return sp.pi * sp.Integer(number) / 180
 
 
 def _same_matrix(A: Any, B: Any) -> bool:
