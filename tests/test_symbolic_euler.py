@@ -273,15 +273,31 @@ def test_gimbal_lock_matrix_is_baker_poles(seq: str) -> None:
 
 def test_gimbal_lock_matrix_pole_values() -> None:
     expected = gimbal_lock_matrix((W, U), "ZYX", pole=90)
-    for spelling in (90.0, np.int64(90), np.float64(90.0), sp.Integer(90)):
+    for spelling in (90.0, np.int64(90), np.float64(90.0), sp.Integer(90), sp.Float(90)):
         assert gimbal_lock_matrix((W, U), "ZYX", pole=spelling) == expected
     bad_values = [("ZYX", 0), ("ZYX", 180), ("ZYX", 1), ("ZXZ", 90), ("ZXZ", -1), ("ZYX", 45.5)]
+    bad_values += [
+        ("ZYX", 10**400),
+        ("ZYX", float("nan")),
+        ("ZYX", sp.oo),
+        ("ZYX", sp.Rational(1, 2)),
+    ]
     for seq, pole in bad_values:
         with pytest.raises(ValueError, match=rf"^pole must be {poles_of(seq)[0]} or .* got"):
             gimbal_lock_matrix((W, U), seq, pole=pole)
-    for pole in (True, np.bool_(False), None, "90", sp.pi / 2, [90]):
+    for pole in (True, np.bool_(False), None, "90", sp.pi / 2, [90], sp.zoo, sp.I):
         with pytest.raises(TypeError, match=r"^pole must be a number of degrees"):
             gimbal_lock_matrix((W, U), "ZYX", pole=pole)
+
+
+@pytest.mark.parametrize("seq", ["ZYX", "baker", "zxz"])
+def test_gimbal_lock_matrix_of_numbers(seq: str) -> None:
+    # numbers hide the sum identities (sin 3 = sin(1 + 2)), so the form is found with symbols
+    for pole in poles_of(seq):
+        for first, third in [(1, 2), (0.25, -1.5), (sp.pi / 3, sp.pi / 7)]:
+            L = np.array(gimbal_lock_matrix((first, third), seq, pole=pole), dtype=float)
+            angles = [float(first), np.radians(pole), float(third)]
+            assert np.allclose(L, eulerlib.euler_to_matrix(angles, seq), atol=1e-15)
 
 
 def test_gimbal_lock_matrix_takes_the_two_outer_angles() -> None:

@@ -10,6 +10,7 @@ carries the combination (see :mod:`eulerlib.conventions`).
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -17,6 +18,7 @@ import sympy as sp
 
 from eulerlib.conventions import Convention, get_convention
 from eulerlib.gimbal_lock import lock_combination
+from eulerlib.sequences import Sequence
 from eulerlib.symbolic._arguments import as_expressions
 from eulerlib.symbolic.euler import euler_product, refuse_convention_first
 
@@ -33,7 +35,10 @@ def singular_middle(pole: object, convention: Convention) -> Any:
             f"Tait–Bryan sequence, 0 or 180 for a proper Euler one), got {pole!r} "
             f"({type(pole).__name__})"
         )
-    degrees = float(pole)
+    try:
+        degrees = float(pole)
+    except OverflowError:
+        degrees = math.inf
     number = int(degrees) if degrees.is_integer() else degrees
     lock_combination(convention, number)  # which poles the sequence has is checked there
     return sp.pi * sp.Integer(number) / 180
@@ -43,6 +48,25 @@ def _same_matrix(A: Any, B: Any) -> bool:
     """Whether two matrices of sines and cosines agree once every sum inside them is expanded."""
     difference = (A - B).applyfunc(lambda entry: sp.expand(sp.expand_trig(entry)))
     return bool(difference.is_zero_matrix)
+
+
+def combination_sign(parsed: Sequence, middle: Any, zeroes_first: bool) -> int:
+    """The sign ``σ`` with which the carrier takes ``carrier + σ·zeroed`` at this pole.
+
+    Found with two fresh symbols for the outer angles, so that it does not depend on what the
+    caller's angles are (numbers such as 1 and 2 would hide the identity ``sin 3 = sin(1 + 2)``).
+    """
+    first, third = sp.Dummy("first", real=True), sp.Dummy("third", real=True)
+    at_pole = euler_product(parsed, (first, middle, third))
+    zeroed, carrier = (first, third) if zeroes_first else (third, first)
+    for sign in (-1, 1):
+        combination = carrier + sign * zeroed
+        values = (0, middle, combination) if zeroes_first else (combination, middle, 0)
+        if _same_matrix(euler_product(parsed, values), at_pole):
+            return sign
+    raise AssertionError(  # pragma: no cover - at a pole one of the two always matches
+        f"no sum or difference form found for {parsed.seq!r} at middle angle {middle}"
+    )
 
 
 def gimbal_lock_matrix(angles: Any, seq: str | Convention, *, pole: float) -> Any:
@@ -78,8 +102,9 @@ def gimbal_lock_matrix(angles: Any, seq: str | Convention, *, pole: float) -> An
     -----
     At the pole the matrix depends on ``third + σ·first`` for one sign ``σ``. Writing it with
     the zeroed angle 0 and the carrier replaced by ``carrier ± zeroed`` gives two candidates;
-    the one equal to the matrix at the pole, once every sine and cosine of a sum is expanded,
-    is returned. The sign found here is the one :func:`eulerlib.lock_combination` states.
+    for two free symbols, exactly one of them equals the matrix at the pole once every sine and
+    cosine of a sum is expanded, and its sign is used for the angles given (numbers too). The
+    sign found here is the one :func:`eulerlib.lock_combination` states.
 
     Examples
     --------
@@ -102,14 +127,9 @@ def gimbal_lock_matrix(angles: Any, seq: str | Convention, *, pole: float) -> An
     parsed = convention.parsed
     first, third = as_expressions(angles, "angles", 2, "outer angles (first, third)")
     middle = singular_middle(pole, convention)
-    at_pole = euler_product(parsed, (first, middle, third))
     zeroes_first = convention.lock_zeroes == "first"
+    sign = combination_sign(parsed, middle, zeroes_first)
     zeroed, carrier = (first, third) if zeroes_first else (third, first)
-    for combination in (carrier - zeroed, carrier + zeroed):
-        values = (0, middle, combination) if zeroes_first else (combination, middle, 0)
-        candidate = euler_product(parsed, values)
-        if _same_matrix(candidate, at_pole):
-            return candidate
-    raise AssertionError(  # pragma: no cover - at a pole one of the two always matches
-        f"no sum or difference form found for {parsed.seq!r} at pole {pole}"
-    )
+    combination = carrier + sign * zeroed
+    values = (0, middle, combination) if zeroes_first else (combination, middle, 0)
+    return euler_product(parsed, values)
