@@ -180,7 +180,9 @@ def angular_velocity_from_matrix(R: Any, t: Any, *, frame: str = "body") -> Any:
     ``S`` is skew-symmetric because ``R Rᵀ = I`` for all ``t`` (see the module docstring); the
     function checks both facts in the algebra before it reads ``ω`` off ``S``. The check uses
     ``sin² x + cos² x = 1`` for every angle that occurs, then ``sp.simplify``; an identity that
-    SymPy cannot prove is reported as a ``ValueError``, never assumed.
+    SymPy cannot prove is reported as a ``ValueError``, never assumed. The check is exact, so a
+    matrix with floating-point entries, which carry rounding, is refused: use exact numbers
+    (``sp.Rational``, ``sp.pi``) or symbols.
 
     Examples
     --------
