@@ -1,7 +1,7 @@
 """Quaternions in SymPy: Hamilton's product, the conjugate, axis–angle and the sandwich matrix.
 
 Oracles: Hamilton's rules for i, j, k typed in here, SymPy's own ``Quaternion`` class (product
-and rotation matrix), SciPy's ``Rotation.from_quat(..., scalar_first=True)`` and
+and rotation matrix), SciPy's ``Rotation.from_quat`` and ``as_quat`` (scalar last, reordered) and
 ``from_rotvec``, and identities decided exactly modulo ``sin² + cos² = 1`` and ``|k| = 1``.
 """
 
@@ -33,6 +33,16 @@ ONE, UNIT_I, UNIT_J, UNIT_K = (tuple(1 if i == n else 0 for i in range(4)) for n
 
 def negative(q: tuple) -> tuple:
     return tuple(-part for part in q)
+
+
+def scalar_last(q: np.ndarray) -> np.ndarray:
+    """(w, x, y, z) → (x, y, z, w), SciPy's order (its scalar_first keyword needs SciPy 1.14)."""
+    return np.roll(q, -1, axis=-1)
+
+
+def scalar_first(q: np.ndarray) -> np.ndarray:
+    """(x, y, z, w) → (w, x, y, z)."""
+    return np.roll(q, 1, axis=-1)
 
 
 def random_unit_quaternions(rng: np.random.Generator, size: int) -> np.ndarray:
@@ -104,7 +114,7 @@ def test_matrix_equals_sympys_rotation_matrix() -> None:
 def test_matrix_matches_scipy(rng: np.random.Generator) -> None:
     f = numeric(quaternion_to_matrix(Q), Q)
     for q in random_unit_quaternions(rng, 30):
-        expected = Rotation.from_quat(q, scalar_first=True).as_matrix()
+        expected = Rotation.from_quat(scalar_last(q)).as_matrix()
         assert np.allclose(f(*q), expected, atol=5e-15)
 
 
@@ -144,7 +154,7 @@ def test_axis_angle_quaternion_matches_scipy(rng: np.random.Generator) -> None:
     angles = rng.uniform(-np.pi + 1e-6, np.pi - 1e-6, 20)  # scalar part cos(θ/2) > 0
     f = numeric(sp.Matrix(quaternion_from_axis_angle(K, T)), (*K, T))
     for k, theta in zip(axes, angles, strict=True):
-        expected = Rotation.from_rotvec(theta * k).as_quat(canonical=True, scalar_first=True)
+        expected = scalar_first(Rotation.from_rotvec(theta * k).as_quat(canonical=True))
         assert np.allclose(f(*k, theta).ravel(), expected, atol=5e-16)
 
 
