@@ -141,10 +141,7 @@ def as_matrix(value: object, name: str) -> Any:
     """``value`` as a 3×3 ``sympy.Matrix`` of finite expressions."""
     if isinstance(value, (str, bytes)):
         raise TypeError(f"{name} must be a 3×3 SymPy matrix, not text ({value!r})")
-    if isinstance(value, sp.MatrixBase):
-        shape = value.shape
-        rows = value.tolist()
-    elif isinstance(value, np.ndarray):
+    if isinstance(value, (sp.MatrixBase, np.ndarray)):
         shape = value.shape
         rows = value.tolist()
     elif isinstance(value, SequenceABC) and all(
