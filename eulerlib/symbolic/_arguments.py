@@ -118,6 +118,12 @@ def as_expressions(value: object, name: str, count: int, what: str) -> tuple[Any
     return tuple(as_expression(item, f"{name}[{i}]") for i, item in enumerate(items))
 
 
+def as_axis_angle(axis: object, angle: object) -> tuple[Any, Any]:
+    """``axis`` as a SymPy column of three expressions (taken as given) and ``angle``."""
+    k = sp.Matrix(as_expressions(axis, "axis", 3, "components"))
+    return k, as_expression(angle, "angle")
+
+
 def as_distinct_symbols(value: object, name: str, count: int) -> tuple[Any, ...]:
     """``value`` as ``count`` distinct ``sympy.Symbol`` objects."""
     symbols = as_expressions(value, name, count, "symbols")

@@ -32,7 +32,7 @@ from typing import Any
 import sympy as sp
 
 from eulerlib.sequences import parse_axis
-from eulerlib.symbolic._arguments import as_expression, as_expressions
+from eulerlib.symbolic._arguments import as_axis_angle, as_expression, as_expressions
 
 __all__ = ["axis_angle_matrix", "elementary_matrix", "rodrigues_matrix", "skew"]
 
@@ -104,8 +104,7 @@ def rodrigues_matrix(axis: Any, angle: Any) -> Any:
     [1, 0, 0],
     [0, 1, 0]])
     """
-    k = sp.Matrix(as_expressions(axis, "axis", 3, "components"))
-    theta = as_expression(angle, "angle")
+    k, theta = as_axis_angle(axis, angle)
     return turn_about(k, theta)
 
 
@@ -243,8 +242,7 @@ def axis_angle_matrix(axis: Any, angle: Any) -> Any:
     [0, 0, 0],
     [0, 0, 0]])
     """
-    k = sp.Matrix(as_expressions(axis, "axis", 3, "components"))
-    theta = as_expression(angle, "angle")
+    k, theta = as_axis_angle(axis, angle)
     K = cross_matrix(k)
     R = sp.eye(3) + sp.sin(theta) * K + (1 - sp.cos(theta)) * K * K
     return R.applyfunc(sp.expand)

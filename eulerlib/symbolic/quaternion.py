@@ -31,7 +31,7 @@ import numpy as np
 import sympy as sp
 from sympy.algebras.quaternion import Quaternion as SympyQuaternion
 
-from eulerlib.symbolic._arguments import as_expression, as_expressions
+from eulerlib.symbolic._arguments import as_axis_angle, as_expressions
 from eulerlib.symbolic.axis_angle import basis_vector
 
 __all__ = [
@@ -206,8 +206,8 @@ def quaternion_from_axis_angle(axis: Any, angle: Any) -> Quaternion:
     >>> quaternion_from_axis_angle((0, 0, 1), sp.pi / 2)   # a quarter turn about z
     Quaternion(w=sqrt(2)/2, x=0, y=0, z=sqrt(2)/2)
     """
-    k = as_expressions(axis, "axis", 3, "components")
-    half = as_expression(angle, "angle") / 2
+    k, theta = as_axis_angle(axis, angle)
+    half = theta / 2
     return Quaternion(sp.cos(half), *(sp.sin(half) * component for component in k))
 
 
