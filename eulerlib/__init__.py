@@ -12,7 +12,7 @@ degrees), ``validate``/``repair``/``atol`` (how rotation matrices are checked), 
 :class:`GimbalLockWarning`).
 
 ``import eulerlib`` loads numpy only; SymPy and matplotlib load in :mod:`eulerlib.symbolic` and
-:mod:`eulerlib.plotting`, which need the ``symbolic`` and ``plot`` extras.
+:mod:`eulerlib.plotting`.
 
 Examples
 --------

@@ -86,6 +86,10 @@ def lock_combination(convention: Convention | str, pole: float) -> tuple[int, st
     """
     chosen = get_convention(convention, "convention")
     parsed = chosen.parsed
+    if isinstance(pole, (bool, np.bool_)) or not isinstance(
+        pole, (int, float, np.integer, np.floating)
+    ):
+        raise TypeError(f"pole must be a number of degrees, got {pole!r} ({type(pole).__name__})")
     if parsed.proper:
         if pole not in (0, 180):
             raise ValueError(f"pole must be 0 or 180 for {chosen.seq!r}, got {pole!r}")

@@ -383,6 +383,15 @@ def test_the_warning_carries_its_facts() -> None:
     assert str(pickle.loads(pickle.dumps(facts))) == str(facts)
 
 
+@pytest.mark.parametrize(
+    ("pole", "error"),
+    [(True, TypeError), ("90", TypeError), (None, TypeError), (45, ValueError), (0, ValueError)],
+)
+def test_lock_combination_checks_its_pole(pole: object, error: type[Exception]) -> None:
+    with pytest.raises(error, match="^pole must be"):
+        lock_combination("rose", pole)  # type: ignore[arg-type]
+
+
 def test_lock_tolerance_is_the_documented_constant() -> None:
     assert GIMBAL_LOCK_TOLERANCE == 2.0**-49
 
