@@ -28,7 +28,13 @@ Everything listed is available directly from ``eulerlib.plotting``.
 
 A sequence ``seq`` means what it means everywhere in eulerlib (and in SciPy): uppercase is
 intrinsic, lowercase extrinsic, angle ``i`` goes with letter ``i``. An extrinsic sequence is
-drawn as its intrinsic twin (letters and angles reversed), which is the same rotation.
+drawn as its intrinsic twin (letters and angles reversed), which is the same rotation. A preset
+such as ``"rose"`` or ``"baker"`` is accepted wherever a ``seq`` is, and drawn with its
+sequence.
+
+Every function checks all of its arguments before it creates a figure or draws anything, by
+the same rules as the rest of eulerlib (:mod:`eulerlib.plotting._checks`): a bad argument
+raises a ``TypeError`` or ``ValueError`` that names it and leaves no figure open in pyplot.
 
 matplotlib is imported inside the functions, so ``import eulerlib`` stays light; this package
 is not imported by ``eulerlib/__init__.py``.

@@ -12,17 +12,14 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from eulerlib._validation import as_vectors
-from eulerlib.sequences import ALL_SEQUENCES, parse_sequence
+from eulerlib.conventions import Convention, get_convention
+from eulerlib.plotting._base import degrees_text, style_axes
+from eulerlib.plotting._checks import angle_triple
+from eulerlib.plotting.frames import draw_frame, new_3d_axes
+from eulerlib.sequences import ALL_SEQUENCES
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
-
-from eulerlib.plotting._base import (
-    _degrees_text,
-    _style_axes,
-)
-from eulerlib.plotting.frames import draw_frame, new_3d_axes
 
 __all__ = [
     "explorer",
@@ -30,7 +27,7 @@ __all__ = [
 ]
 
 
-def explorer_state(angles: ArrayLike, seq: str = "ZYX") -> dict[str, Any]:
+def explorer_state(angles: ArrayLike, seq: str | Convention = "ZYX") -> dict[str, Any]:
     """What the explorer shows for angles (in degrees) in convention ``seq``.
 
     Parameters
@@ -61,10 +58,9 @@ def explorer_state(angles: ArrayLike, seq: str = "ZYX") -> dict[str, Any]:
     """
     from eulerlib import euler_to_matrix, gimbal_lock_status, matrix_to_euler
 
-    parsed = parse_sequence(seq)
-    values = as_vectors(angles, "angles")
-    if values.shape != (3,):
-        raise ValueError(f"angles must be three numbers, got shape {values.shape}")
+    values = angle_triple(angles)
+    seq = get_convention(seq).seq
+    parsed = get_convention(seq).parsed
     matrix = np.round(euler_to_matrix(values, seq, degrees=True), 12) + 0.0
     recovered = np.round(matrix_to_euler(matrix, seq, degrees=True, warn=False), 9) + 0.0
     status = gimbal_lock_status(matrix, seq, degrees=True)
@@ -102,7 +98,7 @@ def _render_png(fig: Figure) -> bytes:
     return buffer.getvalue()
 
 
-def explorer(seq: str = "ZYX") -> Any:
+def explorer(seq: str | Convention = "ZYX") -> Any:
     """An interactive explorer for JupyterLab: three angle sliders and a convention selector.
 
     Moving a slider or choosing another of the 24 sequences redraws the frame (with the
@@ -136,7 +132,7 @@ def explorer(seq: str = "ZYX") -> Any:
     import ipywidgets as widgets
     from matplotlib.figure import Figure
 
-    parse_sequence(seq)
+    seq = get_convention(seq).seq
     initial = (30.0, 20.0, 10.0)
     sliders = [
         widgets.FloatSlider(
@@ -163,7 +159,7 @@ def explorer(seq: str = "ZYX") -> Any:
             slider.description = f"angle {i + 1} ({current[i]})"
         state = explorer_state(angles, current)
         ax.cla()
-        _style_axes(ax, 1.2, f"{current} ({_degrees_text(np.radians(angles))})")
+        style_axes(ax, 1.2, f"{current} ({degrees_text(np.radians(angles))})")
         draw_frame(ax, None, linestyle="--", alpha=0.45, linewidth=1.5)
         draw_frame(ax, state["matrix"], label_suffix="'")
         image.value = _render_png(fig)
