@@ -704,6 +704,74 @@ def test_nothing_is_printed(capsys: pytest.CaptureFixture[str]) -> None:
     assert capsys.readouterr() == ("", "")
 
 
+# --------------------------------------------------------------------------- readable figures
+
+
+def furniture(fig: Any) -> tuple[list[Any], list[Any]]:
+    """The figure's own texts (suptitle, row names) and each axes' title, labels and ticks."""
+    fig.canvas.draw()
+    own = [text for text in fig.texts if text.get_text()]
+    if fig._suptitle is not None:
+        own.append(fig._suptitle)
+    of_axes = []
+    for ax in fig.axes:
+        axis_list = [ax.xaxis, ax.yaxis] + ([ax.zaxis] if hasattr(ax, "zaxis") else [])
+        of_axes.append(ax.title)
+        for axis in axis_list:
+            of_axes.append(axis.label)
+            of_axes.extend(axis.get_ticklabels())
+    return own, [text for text in of_axes if text.get_visible() and text.get_text()]
+
+
+def overlaps(fig: Any) -> list[tuple[str, str]]:
+    """Pairs (figure text, axes text) whose boxes on the canvas intersect."""
+    renderer = fig.canvas.get_renderer()
+    own, of_axes = furniture(fig)
+    found = []
+    for text in own:
+        box = text.get_window_extent(renderer)
+        for other in of_axes:
+            if box.overlaps(other.get_window_extent(renderer)):
+                found.append((text.get_text(), other.get_text()))
+    return found
+
+
+@pytest.mark.parametrize("figsize", [None, (9, 6.2), (11, 7.5)])
+@pytest.mark.parametrize("seq", ["ZYX", "xzx"])
+def test_row_names_of_the_sequence_steps_clear_the_axis_labels(seq: str, figsize: Any) -> None:
+    fig = plot_sequence_steps([40, 30, 20], seq, degrees=True, figsize=figsize)
+    assert overlaps(fig) == []
+    rows = [text for text in fig.texts if text.get_gid() == "row"]
+    assert len(rows) == 2
+    renderer = fig.canvas.get_renderer()
+    for text in [*rows, fig._suptitle]:  # inside the figure, not cut off
+        box = text.get_window_extent(renderer)
+        assert fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1
+        assert fig.bbox.y0 <= box.y0 and box.y1 <= fig.bbox.y1
+
+
+def test_the_gimbal_legend_lies_inside_its_axes() -> None:
+    for angles, seq in (([30, 90, 10], "ZYX"), ([30, 20, 10], "baker")):
+        fig = plot_gimbal(angles, seq, degrees=True)
+        fig.canvas.draw()
+        (ax,) = fig.axes
+        legend = ax.get_legend().get_window_extent(fig.canvas.get_renderer())
+        assert ax.bbox.x0 <= legend.x0 and legend.x1 <= ax.bbox.x1
+        assert ax.bbox.y0 <= legend.y0 and legend.y1 <= ax.bbox.y1
+
+
+def test_every_3d_axes_is_labelled_x_y_z() -> None:
+    figures = [
+        plot_frames(np.eye(3)),
+        plot_sequence_steps([1, 2, 3]),
+        plot_body_rotation(np.eye(3)),
+        plot_gimbal([1, 2, 3]),
+    ]
+    for fig in figures:
+        for ax in fig.axes:
+            assert (ax.get_xlabel(), ax.get_ylabel(), ax.get_zlabel()) == ("x", "y", "z")
+
+
 # --------------------------------------------------------------------------- explorer
 
 

@@ -386,7 +386,8 @@ def plot_sequence_steps(
     two rows show the same frame, because both rows build the same product
     ``R = R_a(α) R_b(β) R_c(γ)``: the top row from left to right (each new factor on the right
     turns about a moved axis), the bottom row from right to left (each new factor on the left
-    turns about a fixed axis).
+    turns about a fixed axis). The name of each row stands upright in the left margin, clear
+    of the axis labels of the panels.
 
     Parameters
     ----------
@@ -464,14 +465,22 @@ def plot_sequence_steps(
                 ax, before, linestyle="--", alpha=0.45, linewidth=1.5, label_suffix=PRIME * step
             )
             frame_artists(ax, fixed[step], label_suffix=PRIME * (step + 1))
-        fig.text(0.01, 0.73, f"intrinsic {intrinsic_seq}\n(moving axes)", fontsize=11, va="center")
-        fig.text(
-            0.01,
-            0.27,
-            f"extrinsic {intrinsic_seq[::-1].lower()}\n(fixed axes)",
-            fontsize=11,
-            va="center",
+        rows = (
+            (0.73, f"intrinsic {intrinsic_seq}\n(moving axes)"),
+            (0.29, f"extrinsic {intrinsic_seq[::-1].lower()}\n(fixed axes)"),
         )
+        for height, words in rows:
+            fig.text(
+                0.01,
+                height,
+                words,
+                rotation=90,
+                fontsize=11,
+                ha="left",
+                va="center",
+                gid="row",
+                multialignment="center",
+            )
         fig.suptitle(
             f"{convention_label(convention)} with angles ({degrees_text(values)}): "
             "the same rotation, read two ways",
