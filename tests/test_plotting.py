@@ -105,6 +105,17 @@ def test_import_eulerlib_does_not_load_matplotlib() -> None:
     assert out.split() == ["False", "False"]
 
 
+def test_everything_public_is_documented_with_an_example() -> None:
+    for name in plotting.__all__:
+        value = getattr(plotting, name)
+        if inspect.isfunction(value) or inspect.isclass(value):
+            doc = inspect.getdoc(value) or ""
+            for section in ("Examples", ">>> "):
+                assert section in doc, f"{name} has no {section.strip()}"
+            if inspect.isfunction(value):
+                assert "Parameters" in doc and "Returns" in doc, name
+
+
 # --------------------------------------------------------------------------- frames
 
 

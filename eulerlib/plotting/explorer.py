@@ -75,6 +75,14 @@ class ExplorerState(NamedTuple):
         ``combinations``); None otherwise.
     text : str
         All of it in words, as the explorer prints it.
+
+    Examples
+    --------
+    >>> state = explorer_state([30, 20, 10], "rose")
+    >>> state.convention.name, state.locked, round(state.distance, 9)
+    ('rose', False, 70.0)
+    >>> state.recovered.round(9)
+    array([30., 20., 10.])
     """
 
     convention: Convention
