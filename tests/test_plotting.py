@@ -796,6 +796,10 @@ def test_explorer_state_is_a_typed_record() -> None:
     assert isinstance(state.locked, bool) and isinstance(state.distance, float)
     assert state.lock is None
     np.testing.assert_array_equal(state.angles, [30.0, 20.0, 10.0])
+    given = np.array([30.0, 20.0, 10.0])
+    kept = explorer_state(given)
+    given[0] = 99.0  # the state does not change with the caller's array
+    np.testing.assert_array_equal(kept.angles, [30.0, 20.0, 10.0])
 
 
 def test_explorer_state_away_from_lock() -> None:

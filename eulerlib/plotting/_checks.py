@@ -75,7 +75,7 @@ def check_figsize(value: object, name: str = "figsize") -> tuple[float, float]:
     """A figure size: two finite numbers > 0 (width and height in inches)."""
     if value is None:
         raise TypeError(f"{name} must be two numbers (width, height) in inches, got None")
-    size = as_float_array(value, name)  # type: ignore[arg-type]
+    size = as_float_array(cast(ArrayLike, value), name)
     if size.shape != (2,):
         raise ValueError(
             f"{name} must be two numbers (width, height) in inches, got shape {size.shape}"

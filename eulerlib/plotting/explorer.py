@@ -142,7 +142,7 @@ def explorer_state(angles: ArrayLike, seq: str | Convention = "ZYX") -> Explorer
     >>> explorer_state([40, 90, 10], "baker").recovered    # Baker sets bank to 0
     array([50., 90.,  0.])
     """
-    values = angle_triple(angles)
+    values = angle_triple(angles).copy()  # the state keeps its own angles
     return _state(values, get_convention(seq))
 
 
