@@ -21,14 +21,22 @@ What there is
   :func:`plot_gimbal` and :func:`animate_gimbal_lock`: three nested rings driven by the three
   angles. At the singular middle angle (±90° for Tait–Bryan, 0° or 180° for proper Euler) two
   rings lie in one plane and the first and third rotation axes coincide: gimbal lock.
-* :mod:`~eulerlib.plotting.explorer`: :func:`explorer` (JupyterLab, needs ipywidgets) with its
-  testable core :func:`explorer_state`: sliders for the three angles and a convention selector.
+* :mod:`~eulerlib.plotting.explorer`: :func:`explorer` (JupyterLab, needs ipywidgets), an
+  :class:`Explorer` with sliders for the three angles and a convention selector, and its
+  testable core :func:`explorer_state`, which returns an :class:`ExplorerState`. Without a
+  kernel the explorer's output is a picture of its starting setting.
 
 Everything listed is available directly from ``eulerlib.plotting``.
 
 A sequence ``seq`` means what it means everywhere in eulerlib (and in SciPy): uppercase is
 intrinsic, lowercase extrinsic, angle ``i`` goes with letter ``i``. An extrinsic sequence is
-drawn as its intrinsic twin (letters and angles reversed), which is the same rotation.
+drawn as its intrinsic twin (letters and angles reversed), which is the same rotation. A preset
+such as ``"rose"`` or ``"baker"`` is accepted wherever a ``seq`` is, and drawn with its
+sequence.
+
+Every function checks all of its arguments before it creates a figure or draws anything, by
+the same rules as the rest of eulerlib (:mod:`eulerlib.plotting._checks`): a bad argument
+raises a ``TypeError`` or ``ValueError`` that names it and leaves no figure open in pyplot.
 
 matplotlib is imported inside the functions, so ``import eulerlib`` stays light; this package
 is not imported by ``eulerlib/__init__.py``.
@@ -49,7 +57,7 @@ Examples
 
 from eulerlib.plotting._base import AXIS_COLORS, HIGHLIGHT_COLOR, RING_COLORS, RING_RADII
 from eulerlib.plotting.aircraft import aircraft_segments, draw_aircraft, plot_body_rotation
-from eulerlib.plotting.explorer import explorer, explorer_state
+from eulerlib.plotting.explorer import Explorer, ExplorerState, explorer, explorer_state
 from eulerlib.plotting.frames import draw_frame, new_3d_axes, plot_frames, plot_sequence_steps
 from eulerlib.plotting.gimbal import (
     animate_gimbal_lock,
@@ -63,6 +71,8 @@ __all__ = [
     "HIGHLIGHT_COLOR",
     "RING_COLORS",
     "RING_RADII",
+    "Explorer",
+    "ExplorerState",
     "aircraft_segments",
     "animate_gimbal_lock",
     "draw_aircraft",

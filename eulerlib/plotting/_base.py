@@ -1,20 +1,24 @@
-"""Shared colours, view and small helpers of the plotting modules."""
+"""Shared colours, view and small helpers of the plotting modules.
+
+The helpers here take arguments that the public functions have already checked
+(:mod:`eulerlib.plotting._checks`); they never check again.
+"""
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
 from typing import TYPE_CHECKING
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import NDArray
 
-from eulerlib._validation import ROTATION_ATOL, RotationCheck, as_rotations, as_vectors
+from eulerlib.conventions import Convention
 from eulerlib.elementary import elementary_rotation
-from eulerlib.sequences import parse_sequence
 
 if TYPE_CHECKING:
+    from matplotlib.figure import Figure, FigureBase
     from mpl_toolkits.mplot3d.axes3d import Axes3D
-
-_CHECKED = RotationCheck(validate=True, repair=False, atol=ROTATION_ATOL)
 
 AXIS_COLORS = ("tab:red", "tab:green", "tab:blue")
 AXIS_LETTERS = ("x", "y", "z")
@@ -28,32 +32,28 @@ PRIME = "'"
 _VIEW = {"elev": 28.0, "azim": 50.0}
 
 
-def _one_matrix(R: ArrayLike | None, name: str = "R") -> NDArray[np.float64]:
-    """``R`` as a single 3×3 rotation matrix (the identity when ``R`` is None)."""
-    if R is None:
-        return np.eye(3)
-    matrix = as_rotations(R, name, _CHECKED)
-    if matrix.shape != (3, 3):
-        raise ValueError(f"{name} must be one 3×3 rotation matrix, got shape {matrix.shape}")
-    return matrix
+@contextmanager
+def pyplot_figure(figsize: tuple[float, float]) -> Iterator[Figure]:
+    """A new pyplot figure that is closed again if drawing into it raises."""
+    import matplotlib.pyplot as plt
+
+    fig = plt.figure(figsize=figsize)
+    try:
+        yield fig
+    except BaseException:
+        plt.close(fig)
+        raise
 
 
-def _intrinsic_steps(
-    angles: ArrayLike, seq: str, degrees: bool
+def intrinsic_steps(
+    values: NDArray[np.float64], convention: Convention
 ) -> tuple[tuple[int, int, int], NDArray[np.float64]]:
-    """Axes and angles (radians) of the intrinsic form of ``seq``, for one set of angles."""
-    parsed = parse_sequence(seq)
-    values = as_vectors(angles, "angles")
-    if values.shape != (3,):
-        raise ValueError(f"angles must be three numbers, got shape {values.shape}")
-    if degrees:
-        values = np.radians(values)
-    if not parsed.intrinsic:
-        values = values[::-1]
-    return parsed.intrinsic_axes, values
+    """Axes and angles (radians) of the intrinsic form of a convention, for one set of angles."""
+    parsed = convention.parsed
+    return parsed.intrinsic_axes, values if parsed.intrinsic else values[::-1]
 
 
-def _partial_products(
+def partial_products(
     axes: tuple[int, int, int], values: NDArray[np.float64]
 ) -> NDArray[np.float64]:
     """Frames after one, two and three intrinsic steps, shape (3, 3, 3)."""
@@ -65,7 +65,8 @@ def _partial_products(
     return frames
 
 
-def _style_axes(ax: Axes3D, limit: float, title: str | None) -> None:
+def style_axes(ax: Axes3D, limit: float, title: str | None) -> None:
+    """Equal cube ``[-limit, limit]³``, labelled x/y/z axes, few ticks, the course's view."""
     ax.set_xlim(-limit, limit)
     ax.set_ylim(-limit, limit)
     ax.set_zlim(-limit, limit)
@@ -83,5 +84,22 @@ def _style_axes(ax: Axes3D, limit: float, title: str | None) -> None:
         ax.set_title(title, fontsize=10)
 
 
-def _degrees_text(values: NDArray[np.float64]) -> str:
+def add_3d_axes(
+    fig: FigureBase, position: tuple[int, int, int], limit: float, title: str | None
+) -> Axes3D:
+    """A styled 3D axes (see :func:`style_axes`) at a checked subplot position of ``fig``."""
+    ax: Axes3D = fig.add_subplot(*position, projection="3d")
+    style_axes(ax, limit, title)
+    return ax
+
+
+def degrees_text(values: NDArray[np.float64]) -> str:
+    """Angles given in radians, written in degrees: ``"30°, 20°, 10°"``."""
     return ", ".join(f"{v:.4g}°" for v in np.degrees(values) + 0.0)
+
+
+def convention_label(convention: Convention) -> str:
+    """``"ZYX"`` for a bare sequence, ``"rose (ZYX)"`` for a named convention."""
+    if convention.name == convention.seq:
+        return convention.seq
+    return f"{convention.name} ({convention.seq})"

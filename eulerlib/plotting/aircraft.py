@@ -12,20 +12,30 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib._validation import ROTATION_ATOL, check_choice, rotation_check
+from eulerlib.plotting._base import add_3d_axes, pyplot_figure
+from eulerlib.plotting._checks import (
+    check_alpha,
+    check_axes3d,
+    check_color,
+    check_figsize,
+    check_linestyle,
+    one_rotation,
+)
+from eulerlib.plotting.frames import frame_artists
+
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
     from mpl_toolkits.mplot3d.axes3d import Axes3D
-
-from eulerlib.plotting._base import (
-    _one_matrix,
-)
-from eulerlib.plotting.frames import draw_frame, new_3d_axes
 
 __all__ = [
     "aircraft_segments",
     "draw_aircraft",
     "plot_body_rotation",
 ]
+
+#: The up axes a body can have: z (Rose, aerospace) or y (Baker).
+UP_AXES = ("z", "y")
 
 
 def aircraft_segments(*, up: str = "z") -> NDArray[np.float64]:
@@ -38,13 +48,19 @@ def aircraft_segments(*, up: str = "z") -> NDArray[np.float64]:
     Parameters
     ----------
     up : {"z", "y"}, optional
-        The body's up axis: ``"z"`` as in Rose's yaw-pitch-roll (aerospace, z up), ``"y"`` as
-        in Baker's heading-attitude-bank (y up; the wings then lie along z).
+        The body's up axis, in either letter case: ``"z"`` as in Rose's yaw-pitch-roll
+        (aerospace, z up), ``"y"`` as in Baker's heading-attitude-bank (y up; the wings then
+        lie along z).
 
     Returns
     -------
     ndarray, shape (n, 2, 3)
         Segment ``k`` runs from ``segments[k, 0]`` to ``segments[k, 1]``.
+
+    Raises
+    ------
+    TypeError, ValueError
+        If ``up`` is not ``"z"`` or ``"y"``.
 
     Examples
     --------
@@ -55,8 +71,11 @@ def aircraft_segments(*, up: str = "z") -> NDArray[np.float64]:
     >>> float(points[:, 2].max()), float(points[:, 1].max())   # fin height, half span
     (0.4, 0.9)
     """
-    if up not in ("z", "y"):
-        raise ValueError(f"up must be 'z' (Rose, aerospace) or 'y' (Baker), got {up!r}")
+    return _segments(check_choice(up, "up", UP_AXES))
+
+
+def _segments(up: str) -> NDArray[np.float64]:
+    """Body of :func:`aircraft_segments` for a checked up axis."""
     # Body coordinates: (forward, side, up).
     half = [
         ((0.3, 0.0, 0.0), (-0.1, 0.9, 0.0)),  # wing leading edge
@@ -90,6 +109,9 @@ def draw_aircraft(
     color: Any = "0.2",
     alpha: float = 1.0,
     linestyle: str = "-",
+    validate: bool = True,
+    repair: bool = False,
+    atol: float = ROTATION_ATOL,
 ) -> list[Any]:
     """Draw the wireframe aircraft of :func:`aircraft_segments`, turned by ``R``.
 
@@ -102,12 +124,19 @@ def draw_aircraft(
     up : {"z", "y"}, optional
         Up axis of the body (see :func:`aircraft_segments`).
     color, alpha, linestyle : optional
-        Line style of the wireframe.
+        Line style of the wireframe: a matplotlib colour, an opacity from 0 to 1, a line style.
+    validate, repair, atol
+        How ``R`` is checked, as in :func:`eulerlib.plotting.draw_frame`.
 
     Returns
     -------
     list of Line3D
         One line per segment, in the order of :func:`aircraft_segments`.
+
+    Raises
+    ------
+    TypeError, ValueError
+        For a bad argument, before anything is drawn; the message names the argument.
 
     Examples
     --------
@@ -115,6 +144,7 @@ def draw_aircraft(
     >>> matplotlib.use("Agg")
     >>> import matplotlib.pyplot as plt
     >>> import eulerlib
+    >>> from eulerlib.plotting import new_3d_axes
     >>> ax = new_3d_axes()
     >>> lines = draw_aircraft(ax, eulerlib.rot_z(90, degrees=True))
     >>> x, y, z = lines[0].get_data_3d()          # the fuselage now points along y
@@ -122,8 +152,29 @@ def draw_aircraft(
     array([-0.9,  1. ])
     >>> plt.close(ax.figure)
     """
-    matrix = _one_matrix(R)
-    segments = aircraft_segments(up=up) @ matrix.T
+    target = check_axes3d(ax)
+    matrix = one_rotation(R, "R", rotation_check(validate, repair, atol))
+    return aircraft_lines(
+        target,
+        matrix,
+        check_choice(up, "up", UP_AXES),
+        color=check_color(color, "color"),
+        alpha=check_alpha(alpha),
+        linestyle=check_linestyle(linestyle),
+    )
+
+
+def aircraft_lines(
+    ax: Axes3D,
+    matrix: NDArray[np.float64],
+    up: str,
+    *,
+    color: Any = "0.2",
+    alpha: float = 1.0,
+    linestyle: Any = "-",
+) -> list[Any]:
+    """Body of :func:`draw_aircraft` for checked arguments."""
+    segments = _segments(up) @ matrix.T
     lines = []
     for segment in segments:
         (line,) = ax.plot(
@@ -140,7 +191,13 @@ def draw_aircraft(
 
 
 def plot_body_rotation(
-    R: ArrayLike, *, up: str = "z", figsize: tuple[float, float] = (12, 4)
+    R: ArrayLike,
+    *,
+    up: str = "z",
+    figsize: tuple[float, float] = (12, 4),
+    validate: bool = True,
+    repair: bool = False,
+    atol: float = ROTATION_ATOL,
 ) -> Figure:
     """An aircraft before a rotation, after it, and back again with the inverse ``Rᵀ``.
 
@@ -152,12 +209,19 @@ def plot_body_rotation(
         Up axis of the body (see :func:`aircraft_segments`).
     figsize : tuple of float, optional
         Figure size in inches.
+    validate, repair, atol
+        How ``R`` is checked, as in :func:`eulerlib.plotting.draw_frame`.
 
     Returns
     -------
     matplotlib.figure.Figure
         Three 3D axes: "before" (identity), "after R" (the rotated body and frame, the original
         faint), and "back with Rᵀ" (the body turned by ``Rᵀ R``, which is the identity).
+
+    Raises
+    ------
+    TypeError, ValueError
+        For a bad argument, before any figure is created; the message names the argument.
 
     Examples
     --------
@@ -170,20 +234,23 @@ def plot_body_rotation(
     ['before', 'after R', 'back with Rᵀ']
     >>> plt.close(fig)
     """
-    import matplotlib.pyplot as plt
-
-    matrix = _one_matrix(R)
+    if R is None:
+        raise TypeError("R must be a rotation matrix, got None")
+    matrix = one_rotation(R, "R", rotation_check(validate, repair, atol))
+    body_up = check_choice(up, "up", UP_AXES)
+    size = check_figsize(figsize)
     back = matrix.T @ matrix
-    fig = plt.figure(figsize=figsize)
-    ax = new_3d_axes(fig, (1, 3, 1), title="before")
-    draw_frame(ax, None, alpha=0.6, linewidth=1.5)
-    draw_aircraft(ax, None, up=up)
-    ax = new_3d_axes(fig, (1, 3, 2), title="after R")
-    draw_frame(ax, None, linestyle="--", alpha=0.35, linewidth=1.2)
-    draw_aircraft(ax, None, up=up, alpha=0.25, linestyle="--")
-    draw_frame(ax, matrix, alpha=0.8, linewidth=1.5, label_suffix="'")
-    draw_aircraft(ax, matrix, up=up)
-    ax = new_3d_axes(fig, (1, 3, 3), title="back with Rᵀ")
-    draw_frame(ax, back, alpha=0.6, linewidth=1.5)
-    draw_aircraft(ax, back, up=up)
+    identity = np.eye(3)
+    with pyplot_figure(size) as fig:
+        ax = add_3d_axes(fig, (1, 3, 1), 1.2, "before")
+        frame_artists(ax, identity, alpha=0.6, linewidth=1.5)
+        aircraft_lines(ax, identity, body_up)
+        ax = add_3d_axes(fig, (1, 3, 2), 1.2, "after R")
+        frame_artists(ax, identity, linestyle="--", alpha=0.35, linewidth=1.2)
+        aircraft_lines(ax, identity, body_up, alpha=0.25, linestyle="--")
+        frame_artists(ax, matrix, alpha=0.8, linewidth=1.5, label_suffix="'")
+        aircraft_lines(ax, matrix, body_up)
+        ax = add_3d_axes(fig, (1, 3, 3), 1.2, "back with Rᵀ")
+        frame_artists(ax, back, alpha=0.6, linewidth=1.5)
+        aircraft_lines(ax, back, body_up)
     return fig

@@ -1,176 +1,397 @@
 """An interactive explorer for JupyterLab: three angle sliders and a convention selector.
 
-:func:`explorer_state` holds the logic (matrix, recovered angles, distance to gimbal lock) as
-a plain function, so it can be tested without a browser; :func:`explorer` wires it to
-ipywidgets.
+:func:`explorer_state` is the explorer's logic as a plain function, testable without a browser:
+the matrix of three angles in a convention, the angles :func:`eulerlib.matrix_to_euler` gives
+back with that convention's own lock policy, and the distance to gimbal lock. At lock the
+words come from the :class:`eulerlib.GimbalLockWarning` the conversion emits (which angle was
+set to 0, which one carries the turn, which combination is still defined), so the explorer
+says exactly what the library did.
+
+:func:`explorer` wires the logic to ipywidgets and returns an :class:`Explorer`. With a live
+kernel, JupyterLab shows its widgets. A stored notebook opened without a kernel, or rendered as
+a web page (nbconvert, Jupyter Book, GitHub), cannot show widgets; there the explorer's output
+falls back to a picture of its frame and text with the sentence "Run this cell in JupyterLab to
+move the sliders." The picture is rendered at a fixed resolution without any date or version
+in the file, so the same settings give the same bytes on every run.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+import base64
+import html
+import io
+import warnings
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
-from numpy.typing import ArrayLike
+from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._validation import as_vectors
-from eulerlib.sequences import ALL_SEQUENCES, parse_sequence
+from eulerlib.conventions import CONVENTIONS, Convention, get_convention
+from eulerlib.gimbal_lock import GimbalLockWarning
+from eulerlib.plotting._base import add_3d_axes, convention_label, style_axes
+from eulerlib.plotting._checks import angle_triple
+from eulerlib.plotting.frames import frame_artists
+from eulerlib.sequences import ALL_SEQUENCES
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-from eulerlib.plotting._base import (
-    _degrees_text,
-    _style_axes,
-)
-from eulerlib.plotting.frames import draw_frame, new_3d_axes
-
 __all__ = [
+    "Explorer",
+    "ExplorerState",
     "explorer",
     "explorer_state",
 ]
 
+#: What a page without a kernel shows under the explorer's picture.
+RUN_SENTENCE = "Run this cell in JupyterLab to move the sliders."
+#: Where the sliders start, in degrees.
+INITIAL_ANGLES = (30.0, 20.0, 10.0)
+#: Resolution of the explorer's pictures; fixed so that the stored picture is reproducible.
+PICTURE_DPI = 72
 
-def explorer_state(angles: ArrayLike, seq: str = "ZYX") -> dict[str, Any]:
-    """What the explorer shows for angles (in degrees) in convention ``seq``.
+
+class ExplorerState(NamedTuple):
+    """What the explorer shows for one setting of its sliders.
+
+    Attributes
+    ----------
+    convention : Convention
+        The convention the angles are read in.
+    angles : ndarray, shape (3,)
+        The slider values, degrees, in the convention's argument order.
+    matrix : ndarray, shape (3, 3)
+        Their rotation matrix.
+    recovered : ndarray, shape (3,)
+        The angles :func:`eulerlib.matrix_to_euler` gives back for the matrix, degrees, with
+        the convention's lock policy.
+    locked : bool
+        Whether the matrix is in gimbal lock (the conversion set one angle to 0).
+    distance : float
+        Distance of the middle angle from gimbal lock, degrees
+        (:func:`eulerlib.gimbal_lock_status`).
+    lock : GimbalLockWarning or None
+        At lock, the warning the conversion emitted, with its facts (``zeroed``, ``carrier``,
+        ``combinations``); None otherwise.
+    text : str
+        All of it in words, as the explorer prints it.
+
+    Examples
+    --------
+    >>> state = explorer_state([30, 20, 10], "rose")
+    >>> state.convention.name, state.locked, round(state.distance, 9)
+    ('rose', False, 70.0)
+    >>> state.recovered.round(9)
+    array([30., 20., 10.])
+    """
+
+    convention: Convention
+    angles: NDArray[np.float64]
+    matrix: NDArray[np.float64]
+    recovered: NDArray[np.float64]
+    locked: bool
+    distance: float
+    lock: GimbalLockWarning | None
+    text: str
+
+
+def explorer_state(angles: ArrayLike, seq: str | Convention = "ZYX") -> ExplorerState:
+    """What the explorer shows for angles (in degrees) in a convention.
 
     Parameters
     ----------
     angles : array_like, shape (3,)
-        The three slider values, in degrees.
-    seq : str, optional
-        Any of the 24 sequences.
+        The three slider values, in degrees, in the convention's argument order.
+    seq : str or Convention, optional
+        Any of the 24 sequences, or a preset such as ``"rose"`` or ``"baker"``, whose angle
+        names and lock policy are used.
 
     Returns
     -------
-    dict
-        ``"matrix"`` (3×3), ``"recovered"`` (the angles :func:`eulerlib.matrix_to_euler` gives
-        back, degrees), ``"locked"`` (bool), ``"distance"`` (degrees from gimbal lock, from
-        :func:`eulerlib.gimbal_lock_status`) and ``"text"``: all of it as the explorer prints
-        it.
+    ExplorerState
+        The matrix, the recovered angles, whether the matrix is locked and how far from lock
+        it is, the :class:`eulerlib.GimbalLockWarning` at lock, and the text.
+
+    Raises
+    ------
+    TypeError, ValueError
+        For a bad argument; the message names the argument.
+
+    Notes
+    -----
+    At gimbal lock (Rose 2015, Part 2, eq 4; Baker's poles) only one combination of the first
+    and third angles is defined. The recovered angles follow the convention's policy: Rose's
+    preset and a bare intrinsic sequence set the first angle to 0, Baker's preset sets bank to
+    0. The text repeats what the warning of the conversion says.
 
     Examples
     --------
-    >>> print(explorer_state([30, 90, 10], "ZYX")["text"])
-    ZYX, angles (30°, 90°, 10°)
+    >>> state = explorer_state([30, 90, 10], "rose")
+    >>> state.locked, state.lock.zeroed, state.lock.carrier
+    (True, 'yaw', 'roll')
+    >>> print(state.text)
+    rose (ZYX): yaw 30°, pitch 90°, roll 10°
     R =
     [[ 0.0000 -0.3420  0.9397]
      [ 0.0000  0.9397  0.3420]
      [-1.0000  0.0000  0.0000]]
-    recovered angles: (0°, 90°, -20°)
-    distance to gimbal lock: 0° (LOCKED: angle 1 set to 0, angle 3 carries the turn)
+    recovered: yaw 0°, pitch 90°, roll -20°
+    distance to gimbal lock: 0° (LOCKED)
+    only roll - yaw is defined at pitch 90°:
+    yaw set to 0, roll carries the whole turn
+    >>> explorer_state([40, 90, 10], "baker").recovered    # Baker sets bank to 0
+    array([50., 90.,  0.])
     """
-    from eulerlib import euler_to_matrix, gimbal_lock_status, matrix_to_euler
+    values = angle_triple(angles).copy()  # the state keeps its own angles
+    return _state(values, get_convention(seq))
 
-    parsed = parse_sequence(seq)
-    values = as_vectors(angles, "angles")
-    if values.shape != (3,):
-        raise ValueError(f"angles must be three numbers, got shape {values.shape}")
-    matrix = np.round(euler_to_matrix(values, seq, degrees=True), 12) + 0.0
-    recovered = np.round(matrix_to_euler(matrix, seq, degrees=True, warn=False), 9) + 0.0
-    status = gimbal_lock_status(matrix, seq, degrees=True)
-    locked = bool(status.locked)
-    distance = float(status.distance)
+
+def _state(values: NDArray[np.float64], convention: Convention) -> ExplorerState:
+    """Body of :func:`explorer_state` for checked angles (degrees) and convention."""
+    from eulerlib.euler import euler_to_matrix, matrix_to_euler
+    from eulerlib.gimbal_lock import gimbal_lock_status
+
+    matrix = euler_to_matrix(values, convention, degrees=True)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", GimbalLockWarning)
+        recovered = matrix_to_euler(matrix, convention, degrees=True)
+    lock = None
+    for record in caught:
+        if isinstance(record.message, GimbalLockWarning):
+            lock = record.message
+        else:  # not ours to swallow
+            warnings.warn_explicit(record.message, record.category, record.filename, record.lineno)
+    distance = float(gimbal_lock_status(matrix, convention, degrees=True).distance)
+    text = _state_text(convention, values, matrix, recovered, distance, lock)
+    return ExplorerState(
+        convention, values, matrix, recovered, lock is not None, distance, lock, text
+    )
+
+
+def _degrees(value: float) -> str:
+    return f"{np.round(value, 9) + 0.0:.4g}°"
+
+
+def _state_text(
+    convention: Convention,
+    values: NDArray[np.float64],
+    matrix: NDArray[np.float64],
+    recovered: NDArray[np.float64],
+    distance: float,
+    lock: GimbalLockWarning | None,
+) -> str:
+    names = convention.angle_names
+
+    def listing(angles: NDArray[np.float64]) -> str:
+        return ", ".join(
+            f"{name} {_degrees(angle)}" for name, angle in zip(names, angles, strict=True)
+        )
+
     matrix_text = np.array2string(
-        matrix, separator=" ", formatter={"float_kind": lambda v: f"{v: .4f}"}
+        np.round(matrix, 4) + 0.0, separator=" ", formatter={"float_kind": lambda v: f"{v: .4f}"}
     )
-    zeroed, carrier = (1, 3) if parsed.intrinsic else (3, 1)
-    lock_text = (
-        f" (LOCKED: angle {zeroed} set to 0, angle {carrier} carries the turn)" if locked else ""
-    )
-    text = (
-        f"{seq}, angles ({', '.join(f'{v:.4g}°' for v in values + 0.0)})\n"
-        f"R =\n{matrix_text}\n"
-        f"recovered angles: ({', '.join(f'{v:.4g}°' for v in recovered)})\n"
-        f"distance to gimbal lock: {distance:.4g}°{lock_text}"
-    )
-    return {
-        "seq": seq,
-        "angles": values,
-        "matrix": matrix,
-        "recovered": recovered,
-        "locked": locked,
-        "distance": distance,
-        "text": text,
-    }
+    lines = [
+        f"{convention_label(convention)}: {listing(values)}",
+        f"R =\n{matrix_text}",
+        f"recovered: {listing(recovered)}",
+        f"distance to gimbal lock: {_degrees(distance)}" + (" (LOCKED)" if lock else ""),
+    ]
+    if lock is not None:
+        # one matrix meets one pole; the words are the warning's
+        for pole, combination in lock.combinations.items():
+            lines.append(f"only {combination} is defined at {names[1]} {pole}°:")
+        lines.append(f"{lock.zeroed} set to 0, {lock.carrier} carries the whole turn")
+    return "\n".join(lines)
 
 
-def _render_png(fig: Figure) -> bytes:
-    import io
-
+def _png(fig: Figure) -> bytes:
+    """The figure as PNG bytes: fixed resolution, no software version or date in the file."""
     buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=72, metadata={"Software": None})
+    fig.savefig(buffer, format="png", dpi=PICTURE_DPI, metadata={"Software": None})
     return buffer.getvalue()
 
 
-def explorer(seq: str = "ZYX") -> Any:
-    """An interactive explorer for JupyterLab: three angle sliders and a convention selector.
+def _draw_state(ax: Any, state: ExplorerState) -> None:
+    """The reference frame (dashed) and the rotated frame of a state, on a cleared 3D axes."""
+    ax.cla()
+    values = ", ".join(_degrees(angle) for angle in state.angles)
+    style_axes(ax, 1.2, f"{convention_label(state.convention)} ({values})")
+    frame_artists(ax, np.eye(3), linestyle="--", alpha=0.45, linewidth=1.5)
+    frame_artists(ax, state.matrix, label_suffix="'")
 
-    Moving a slider or choosing another of the 24 sequences redraws the frame (with the
-    reference frame dashed) and updates the text of :func:`explorer_state`: the matrix, the
-    angles recovered from it, and the distance to gimbal lock.
 
-    Parameters
+def _selector_options(convention: Convention) -> list[tuple[str, Convention]]:
+    """The presets, then the 24 sequences; a convention made by the caller comes first."""
+    presets = [CONVENTIONS[name] for name in ("rose", "baker", "ros")]
+    sequences = [get_convention(seq) for seq in ALL_SEQUENCES]
+    options = [(convention_label(choice), choice) for choice in presets + sequences]
+    if convention not in presets + sequences:
+        options.insert(0, (convention_label(convention), convention))
+    return options
+
+
+class Explorer:
+    """Three angle sliders and a convention selector, with the frame and text they produce.
+
+    Made by :func:`explorer`. Display it as the last expression of a cell: with a live kernel
+    JupyterLab shows the widgets (:attr:`widget`); a page without a kernel shows a picture of
+    the current setting with the sentence "Run this cell in JupyterLab to move the sliders."
+
+    Attributes
     ----------
-    seq : str, optional
-        Convention selected at the start.
-
-    Returns
-    -------
-    ipywidgets.VBox
-        ``children[0]`` holds the three sliders (degrees) and the dropdown, ``children[1]`` the
-        picture (an ``Image`` widget, PNG) and the text (an ``HTML`` widget). Display it as the
-        last expression of a cell.
+    sliders : tuple of 3 ipywidgets.FloatSlider
+        The angles, degrees, each labelled with the convention's name for it.
+    selector : ipywidgets.Dropdown
+        The convention: the presets ``rose``, ``baker``, ``ros``, then the 24 sequences.
+    image : ipywidgets.Image
+        The frame (PNG), redrawn on every change.
+    text : ipywidgets.HTML
+        The text of :func:`explorer_state`.
+    widget : ipywidgets.VBox
+        All of the above: the controls on top, the picture and the text below.
 
     Examples
     --------
     >>> import matplotlib
     >>> matplotlib.use("Agg")
-    >>> box = explorer("ZYX")
-    >>> sliders = box.children[0].children[:3]
-    >>> sliders[1].value = 90.0
-    >>> "LOCKED" in box.children[1].children[1].value
-    True
+    >>> panel = explorer("rose")
+    >>> [slider.description for slider in panel.sliders]
+    ['yaw', 'pitch', 'roll']
+    >>> panel.sliders[1].value = 90.0
+    >>> panel.state.locked, panel.state.lock.zeroed
+    (True, 'yaw')
     """
-    import html
 
-    import ipywidgets as widgets
-    from matplotlib.figure import Figure
+    _state: ExplorerState
 
-    parse_sequence(seq)
-    initial = (30.0, 20.0, 10.0)
-    sliders = [
-        widgets.FloatSlider(
-            value=initial[i],
-            min=-180.0,
-            max=180.0,
-            step=1.0,
-            description=f"angle {i + 1}",
-            continuous_update=True,
-            readout_format=".0f",
+    def __init__(self, seq: str | Convention = "ZYX") -> None:
+        convention = get_convention(seq)
+        try:
+            import ipywidgets as widgets
+        except ImportError:  # pragma: no cover - depends on the installation
+            raise ImportError(
+                "the explorer needs ipywidgets: install eulerlib with the notebooks extra"
+            ) from None
+        from matplotlib.figure import Figure
+
+        self.sliders = tuple(
+            widgets.FloatSlider(
+                value=INITIAL_ANGLES[i],
+                min=-180.0,
+                max=180.0,
+                step=1.0,
+                description=convention.angle_names[i],
+                continuous_update=True,
+                readout_format=".0f",
+            )
+            for i in range(3)
         )
-        for i in range(3)
-    ]
-    dropdown = widgets.Dropdown(options=list(ALL_SEQUENCES), value=seq, description="seq")
-    image = widgets.Image(format="png")
-    text = widgets.HTML()
-    fig = Figure(figsize=(4, 4))
-    ax = new_3d_axes(fig)
+        self.selector = widgets.Dropdown(
+            options=_selector_options(convention), value=convention, description="convention"
+        )
+        self.image = widgets.Image(format="png")
+        self.text = widgets.HTML()
+        self.widget = widgets.VBox(
+            [widgets.HBox([*self.sliders, self.selector]), widgets.HBox([self.image, self.text])]
+        )
+        self._figure = Figure(figsize=(4, 4))  # not managed by pyplot: nothing to close
+        self._ax = add_3d_axes(self._figure, (1, 1, 1), 1.2, None)
+        for slider in self.sliders:
+            slider.observe(self._update, names="value")
+        self.selector.observe(self._update, names="value")
+        self._update()
 
-    def update(*_: Any) -> None:
-        current = dropdown.value
-        angles = [slider.value for slider in sliders]
-        for i, slider in enumerate(sliders):
-            slider.description = f"angle {i + 1} ({current[i]})"
-        state = explorer_state(angles, current)
-        ax.cla()
-        _style_axes(ax, 1.2, f"{current} ({_degrees_text(np.radians(angles))})")
-        draw_frame(ax, None, linestyle="--", alpha=0.45, linewidth=1.5)
-        draw_frame(ax, state["matrix"], label_suffix="'")
-        image.value = _render_png(fig)
-        text.value = f"<pre>{html.escape(state['text'])}</pre>"
+    @property
+    def convention(self) -> Convention:
+        """The convention selected."""
+        chosen: Convention = self.selector.value
+        return chosen
 
-    for slider in sliders:
-        slider.observe(update, names="value")
-    dropdown.observe(update, names="value")
-    update()
-    return widgets.VBox([widgets.HBox([*sliders, dropdown]), widgets.HBox([image, text])])
+    @property
+    def angles(self) -> NDArray[np.float64]:
+        """The slider values, degrees."""
+        return np.array([float(slider.value) for slider in self.sliders])
+
+    @property
+    def state(self) -> ExplorerState:
+        """What the explorer shows now (see :func:`explorer_state`)."""
+        return self._state
+
+    def _update(self, *_: Any) -> None:
+        convention = self.convention
+        for slider, name in zip(self.sliders, convention.angle_names, strict=True):
+            slider.description = name
+        self._state = _state(self.angles, convention)
+        _draw_state(self._ax, self._state)
+        self.image.value = _png(self._figure)
+        self.text.value = f"<pre>{html.escape(self._state.text)}</pre>"
+
+    def static_png(self) -> bytes:
+        """A picture of the current setting for a page without a kernel, as PNG bytes.
+
+        The frame on the left, the text of :attr:`state` on the right, and below them the
+        sentence "Run this cell in JupyterLab to move the sliders." The same setting gives
+        the same bytes on every run.
+        """
+        from matplotlib.figure import Figure
+
+        fig = Figure(figsize=(8.5, 4.2))
+        ax = add_3d_axes(fig, (1, 2, 1), 1.2, None)
+        ax.set_position((0.04, 0.12, 0.42, 0.78))
+        _draw_state(ax, self._state)
+        fig.text(0.5, 0.55, self._state.text, family="monospace", fontsize=10, va="center")
+        fig.text(0.5, 0.04, RUN_SENTENCE, ha="center", fontsize=11, style="italic")
+        return _png(fig)
+
+    def _repr_mimebundle_(
+        self, include: Any = None, exclude: Any = None, **kwargs: Any
+    ) -> dict[str, Any]:
+        """The widget view, with a picture and text for a page without a kernel."""
+        bundle: dict[str, Any] = dict(self.widget._repr_mimebundle_(**kwargs) or {})
+        bundle["image/png"] = base64.b64encode(self.static_png()).decode("ascii")
+        bundle["text/plain"] = f"{self._state.text}\n{RUN_SENTENCE}"
+        return bundle
+
+    def __repr__(self) -> str:
+        values = ", ".join(_degrees(angle) for angle in self.angles)
+        return f"<Explorer {convention_label(self.convention)}: {values}>"
+
+
+def explorer(seq: str | Convention = "ZYX") -> Explorer:
+    """An interactive explorer for JupyterLab: three angle sliders and a convention selector.
+
+    Moving a slider or choosing another convention redraws the frame (with the reference frame
+    dashed) and updates the text of :func:`explorer_state`: the matrix, the angles recovered
+    from it with the convention's lock policy, and the distance to gimbal lock. The sliders are
+    labelled with the convention's angle names (yaw, pitch, roll for ``"rose"``).
+
+    Parameters
+    ----------
+    seq : str or Convention, optional
+        Convention selected at the start: any of the 24 sequences or a preset such as
+        ``"rose"``.
+
+    Returns
+    -------
+    Explorer
+        Display it as the last expression of a cell. Where no kernel runs (a stored notebook,
+        a web page), its output is a picture of the starting setting and the sentence "Run this
+        cell in JupyterLab to move the sliders."
+
+    Raises
+    ------
+    TypeError, ValueError
+        For a bad ``seq``; the message names it.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> panel = explorer("ZYX")
+    >>> panel.sliders[1].value = 90.0
+    >>> "LOCKED" in panel.text.value
+    True
+    >>> sorted(panel._repr_mimebundle_())
+    ['application/vnd.jupyter.widget-view+json', 'image/png', 'text/plain']
+    """
+    return Explorer(seq)

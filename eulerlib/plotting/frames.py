@@ -13,27 +13,41 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._validation import ROTATION_ATOL, RotationCheck, as_rotations, as_vectors
+from eulerlib._validation import ROTATION_ATOL, as_vectors, check_flag, rotation_check
+from eulerlib.conventions import Convention, get_convention
 from eulerlib.elementary import elementary_rotation
-from eulerlib.sequences import parse_sequence
-
-if TYPE_CHECKING:
-    from matplotlib.figure import Figure
-    from mpl_toolkits.mplot3d.axes3d import Axes3D
-
 from eulerlib.plotting._base import (
     AXIS_COLORS,
     AXIS_LETTERS,
     HIGHLIGHT_COLOR,
     PRIME,
-    _degrees_text,
-    _intrinsic_steps,
-    _one_matrix,
-    _partial_products,
-    _style_axes,
+    add_3d_axes,
+    convention_label,
+    degrees_text,
+    intrinsic_steps,
+    partial_products,
+    pyplot_figure,
+)
+from eulerlib.plotting._checks import (
+    check_alpha,
+    check_axes3d,
+    check_colors,
+    check_figsize,
+    check_figure,
+    check_linestyle,
+    check_optional_text,
+    check_position,
+    check_positive,
+    check_text,
+    check_texts,
+    one_rotation,
+    rotation_stack,
+    three_angles,
 )
 
-_CHECKED = RotationCheck(validate=True, repair=False, atol=ROTATION_ATOL)
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure, FigureBase
+    from mpl_toolkits.mplot3d.axes3d import Axes3D
 
 __all__ = [
     "draw_frame",
@@ -44,7 +58,7 @@ __all__ = [
 
 
 def new_3d_axes(
-    fig: Figure | None = None,
+    fig: FigureBase | None = None,
     position: int | tuple[int, int, int] = 111,
     *,
     limit: float = 1.2,
@@ -56,19 +70,25 @@ def new_3d_axes(
     Parameters
     ----------
     fig : matplotlib.figure.Figure, optional
-        Figure to add the axes to. By default a new pyplot figure of size ``figsize``.
+        Figure (or subfigure) to add the axes to. By default a new pyplot figure of size
+        ``figsize``.
     position : int or tuple of int, optional
         Subplot position, as ``fig.add_subplot`` takes it: ``111`` or ``(1, 3, 2)``.
     limit : float, optional
-        The axes show ``[-limit, limit]`` in x, y and z (a cube, drawn as a cube).
+        The axes show ``[-limit, limit]`` in x, y and z (a cube, drawn as a cube); > 0.
     title : str, optional
         Title of the axes.
     figsize : tuple of float, optional
-        Size of a new figure, in inches.
+        Size of a new figure, in inches (two numbers > 0).
 
     Returns
     -------
     mpl_toolkits.mplot3d.axes3d.Axes3D
+
+    Raises
+    ------
+    TypeError, ValueError
+        For a bad argument, before any figure is created; the message names the argument.
 
     Examples
     --------
@@ -80,34 +100,38 @@ def new_3d_axes(
     True
     >>> plt.close(ax.figure)
     """
-    import matplotlib.pyplot as plt
-
-    if limit <= 0:
-        raise ValueError(f"limit must be positive, got {limit}")
-    if fig is None:
-        fig = plt.figure(figsize=figsize)
-    if isinstance(position, tuple):
-        ax = fig.add_subplot(*position, projection="3d")
-    else:
-        ax = fig.add_subplot(position, projection="3d")
-    _style_axes(ax, limit, title)
-    return ax
+    target = check_figure(fig)
+    where = check_position(position)
+    half = check_positive(limit, "limit")
+    heading = check_optional_text(title, "title")
+    size = check_figsize(figsize)
+    if target is not None:
+        return add_3d_axes(target, where, half, heading)
+    with pyplot_figure(size) as new:
+        return add_3d_axes(new, where, half, heading)
 
 
 def _arrow_head(
     ax: Axes3D, tip: NDArray[np.float64], direction: NDArray[np.float64], size: float, **style: Any
 ) -> Any:
-    """A small filled cone with its point at ``tip``, pointing along ``direction``."""
+    """A small filled cone with its point at ``tip``, pointing along ``direction``.
+
+    A zero ``direction`` (a column of a matrix drawn with ``validate=False``) gets an empty cone.
+    """
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-    helper = np.eye(3)[int(np.argmin(np.abs(direction)))]
-    u = np.cross(direction, helper)
-    u /= np.linalg.norm(u)
-    v = np.cross(direction, u)
-    t = np.linspace(0.0, 2.0 * np.pi, 9)
-    base = tip - 2.5 * size * direction
-    rim = base + size * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
-    faces = [[tip, rim[n], rim[n + 1]] for n in range(len(t) - 1)]
+    length = float(np.linalg.norm(direction))
+    faces = []
+    if length > 0.0:
+        unit = direction / length
+        helper = np.eye(3)[int(np.argmin(np.abs(unit)))]
+        u = np.cross(unit, helper)
+        u /= np.linalg.norm(u)
+        v = np.cross(unit, u)
+        t = np.linspace(0.0, 2.0 * np.pi, 9)
+        base = tip - 2.5 * size * unit
+        rim = base + size * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
+        faces = [[tip, rim[n], rim[n + 1]] for n in range(len(t) - 1)]
     cone = Poly3DCollection(faces, linewidths=0.0, **style)
     ax.add_collection3d(cone)
     return cone
@@ -125,6 +149,9 @@ def draw_frame(
     colors: Sequence[Any] = AXIS_COLORS,
     labels: Sequence[str] = AXIS_LETTERS,
     label_suffix: str = "",
+    validate: bool = True,
+    repair: bool = False,
+    atol: float = ROTATION_ATOL,
 ) -> list[Any]:
     """Draw the frame of a rotation matrix: three labelled arrows, arrow ``i`` along column ``i``.
 
@@ -137,19 +164,23 @@ def draw_frame(
     origin : array_like, shape (3,), optional
         Where the arrows start.
     scale : float, optional
-        Length of the arrows.
+        Length of the arrows; > 0.
     alpha : float, optional
         Opacity, 0 to 1.
     linestyle : str, optional
         Line style of the arrow shafts: ``"-"`` for a rotated frame, ``"--"`` for a reference.
     linewidth : float, optional
-        Width of the shafts.
+        Width of the shafts; > 0.
     colors : sequence of 3 colours, optional
         Colours of the x, y, z arrows; red, green, blue by default.
     labels : sequence of 3 str, optional
-        Names of the axes, written at the arrow tips.
+        Names of the axes, written at the arrow tips (``""`` writes none).
     label_suffix : str, optional
         Appended to every label, for example ``"'"`` for the frame after one rotation.
+    validate, repair, atol
+        As in :func:`eulerlib.matrix_to_euler`: ``R`` must be a rotation within ``atol``
+        (default), or is replaced by the nearest rotation (``repair=True``), or is drawn as it
+        is (``validate=False``: the columns of any matrix, for example a shear).
 
     Returns
     -------
@@ -157,6 +188,11 @@ def draw_frame(
         Nine artists, three per axis in the order x, y, z: the shaft (a ``Line3D`` from the
         origin to the tip, labelled with the axis name), the arrowhead (a ``Poly3DCollection``)
         and the label (a ``Text3D``).
+
+    Raises
+    ------
+    TypeError, ValueError
+        For a bad argument, before anything is drawn; the message names the argument.
 
     Examples
     --------
@@ -175,16 +211,40 @@ def draw_frame(
            [0., 0.]])
     >>> plt.close(ax.figure)
     """
-    matrix = _one_matrix(R)
+    target = check_axes3d(ax)
+    matrix = one_rotation(R, "R", rotation_check(validate, repair, atol))
     start = as_vectors(origin, "origin")
     if start.shape != (3,):
         raise ValueError(f"origin must be one point (3 numbers), got shape {start.shape}")
-    if len(colors) != 3 or len(labels) != 3:
-        raise ValueError(
-            f"colors and labels must have 3 entries (x, y, z), got {len(colors)} and {len(labels)}"
-        )
-    if scale <= 0:
-        raise ValueError(f"scale must be positive, got {scale}")
+    return frame_artists(
+        target,
+        matrix,
+        origin=start,
+        scale=check_positive(scale, "scale"),
+        alpha=check_alpha(alpha),
+        linestyle=check_linestyle(linestyle),
+        linewidth=check_positive(linewidth, "linewidth"),
+        colors=check_colors(colors, "colors", 3),
+        labels=check_texts(labels, "labels", 3, "the names of x, y, z"),
+        label_suffix=check_text(label_suffix, "label_suffix"),
+    )
+
+
+def frame_artists(
+    ax: Axes3D,
+    matrix: NDArray[np.float64],
+    *,
+    origin: NDArray[np.float64] | None = None,
+    scale: float = 1.0,
+    alpha: float = 1.0,
+    linestyle: Any = "-",
+    linewidth: float = 2.0,
+    colors: Sequence[Any] = AXIS_COLORS,
+    labels: Sequence[str] = AXIS_LETTERS,
+    label_suffix: str = "",
+) -> list[Any]:
+    """Body of :func:`draw_frame` for checked arguments (the plotting modules call it)."""
+    start = np.zeros(3) if origin is None else origin
     artists: list[Any] = []
     for i in range(3):
         direction = matrix[:, i]
@@ -228,6 +288,9 @@ def plot_frames(
     reference: bool = True,
     figsize: tuple[float, float] = (5, 5),
     title: str | None = None,
+    validate: bool = True,
+    repair: bool = False,
+    atol: float = ROTATION_ATOL,
 ) -> Figure:
     """Draw one or several rotated frames in one axes, with the fixed reference frame dashed.
 
@@ -244,11 +307,18 @@ def plot_frames(
         Figure size in inches.
     title : str, optional
         Title of the axes.
+    validate, repair, atol
+        How ``rotations`` are checked, as in :func:`draw_frame`.
 
     Returns
     -------
     matplotlib.figure.Figure
         A pyplot figure with one 3D axes.
+
+    Raises
+    ------
+    TypeError, ValueError
+        For a bad argument, before any figure is created; the message names the argument.
 
     Examples
     --------
@@ -262,24 +332,23 @@ def plot_frames(
     ['x', "x'", "x''", 'y', "y'", "y''", 'z', "z'", "z''"]
     >>> plt.close(fig)
     """
-    matrices = as_rotations(rotations, "rotations", _CHECKED)
-    if matrices.ndim == 2:
-        matrices = matrices[None]
-    if matrices.ndim != 3:
-        raise ValueError(
-            f"rotations must have shape (3, 3) or (n, 3, 3), got shape {matrices.shape}"
-        )
+    matrices = rotation_stack(rotations, "rotations", rotation_check(validate, repair, atol))
     count = matrices.shape[0]
-    suffixes = _default_suffixes(count) if labels is None else list(labels)
-    if len(suffixes) != count:
-        raise ValueError(f"labels must have one entry per rotation ({count}), got {len(suffixes)}")
-    ax = new_3d_axes(figsize=figsize, title=title)
-    if reference:
-        draw_frame(ax, None, linestyle="--", alpha=0.45, linewidth=1.5)
-    for matrix, suffix in zip(matrices, suffixes, strict=True):
-        draw_frame(ax, matrix, label_suffix=suffix)
-    figure: Figure = ax.figure
-    return figure
+    suffixes = (
+        _default_suffixes(count)
+        if labels is None
+        else check_texts(labels, "labels", count, "one suffix per rotation")
+    )
+    with_reference = check_flag(reference, "reference")
+    size = check_figsize(figsize)
+    heading = check_optional_text(title, "title")
+    with pyplot_figure(size) as fig:
+        ax = add_3d_axes(fig, (1, 1, 1), 1.2, heading)
+        if with_reference:
+            frame_artists(ax, np.eye(3), linestyle="--", alpha=0.45, linewidth=1.5)
+        for matrix, suffix in zip(matrices, suffixes, strict=True):
+            frame_artists(ax, matrix, label_suffix=suffix)
+    return fig
 
 
 def _highlight_axis(ax: Axes3D, direction: NDArray[np.float64], limit: float = 1.1) -> Any:
@@ -302,7 +371,7 @@ def _highlight_axis(ax: Axes3D, direction: NDArray[np.float64], limit: float = 1
 
 def plot_sequence_steps(
     angles: ArrayLike,
-    seq: str = "ZYX",
+    seq: str | Convention = "ZYX",
     *,
     degrees: bool = False,
     figsize: tuple[float, float] | None = None,
@@ -317,14 +386,16 @@ def plot_sequence_steps(
     two rows show the same frame, because both rows build the same product
     ``R = R_a(α) R_b(β) R_c(γ)``: the top row from left to right (each new factor on the right
     turns about a moved axis), the bottom row from right to left (each new factor on the left
-    turns about a fixed axis).
+    turns about a fixed axis). The name of each row stands upright in the left margin, clear
+    of the axis labels of the panels.
 
     Parameters
     ----------
     angles : array_like, shape (3,)
         Angle ``i`` goes with letter ``i`` of ``seq``.
-    seq : str, optional
-        Any of the 24 sequences; an extrinsic one is shown through its intrinsic twin.
+    seq : str or Convention, optional
+        Any of the 24 sequences, or a preset such as ``"rose"`` (drawn with its sequence); an
+        extrinsic sequence is shown through its intrinsic twin.
     degrees : bool, optional
         Read ``angles`` in degrees.
     figsize : tuple of float, optional
@@ -334,6 +405,11 @@ def plot_sequence_steps(
     -------
     matplotlib.figure.Figure
         Six 3D axes: intrinsic steps 1–3 on the top row, extrinsic steps 1–3 below.
+
+    Raises
+    ------
+    TypeError, ValueError
+        For a bad argument, before any figure is created; the message names the argument.
 
     Examples
     --------
@@ -345,55 +421,69 @@ def plot_sequence_steps(
     ['1. 30° about z', "2. 20° about y'", "3. 10° about x''"]
     >>> plt.close(fig)
     """
-    import matplotlib.pyplot as plt
-
-    parsed = parse_sequence(seq)
-    axes, values = _intrinsic_steps(angles, seq, degrees)
-    moving = _partial_products(axes, values)
+    values = three_angles(angles, degrees)
+    convention = get_convention(seq)
+    size = (11.0, 7.5) if figsize is None else check_figsize(figsize)
+    axes, steps = intrinsic_steps(values, convention)
+    moving = partial_products(axes, steps)
     # Extrinsic reading: the reversed steps about the fixed axes, each multiplied on the left.
     fixed = np.empty((3, 3, 3))
     previous = np.eye(3)
     for step in range(3):
         axis = axes[2 - step]
-        previous = elementary_rotation(axis, values[2 - step]) @ previous
+        previous = elementary_rotation(axis, steps[2 - step]) @ previous
         fixed[step] = previous
     intrinsic_seq = "".join(AXIS_LETTERS[a] for a in axes).upper()
-    fig = plt.figure(figsize=figsize if figsize is not None else (11, 7.5))
-    for step in range(3):
-        before = np.eye(3) if step == 0 else moving[step - 1]
-        axis = axes[step]
-        degrees_text = f"{np.degrees(values[step]) + 0.0:.4g}°"
-        ax = new_3d_axes(
-            fig,
-            (2, 3, step + 1),
-            title=f"{step + 1}. {degrees_text} about {AXIS_LETTERS[axis]}{PRIME * step}",
+    with pyplot_figure(size) as fig:
+        for step in range(3):
+            before = np.eye(3) if step == 0 else moving[step - 1]
+            axis = axes[step]
+            angle_text = f"{np.degrees(steps[step]) + 0.0:.4g}°"
+            ax = add_3d_axes(
+                fig,
+                (2, 3, step + 1),
+                1.2,
+                f"{step + 1}. {angle_text} about {AXIS_LETTERS[axis]}{PRIME * step}",
+            )
+            _highlight_axis(ax, before[:, axis])
+            frame_artists(
+                ax, before, linestyle="--", alpha=0.45, linewidth=1.5, label_suffix=PRIME * step
+            )
+            frame_artists(ax, moving[step], label_suffix=PRIME * (step + 1))
+        for step in range(3):
+            before = np.eye(3) if step == 0 else fixed[step - 1]
+            axis = axes[2 - step]
+            angle_text = f"{np.degrees(steps[2 - step]) + 0.0:.4g}°"
+            ax = add_3d_axes(
+                fig,
+                (2, 3, step + 4),
+                1.2,
+                f"{step + 1}. {angle_text} about fixed {AXIS_LETTERS[axis]}",
+            )
+            _highlight_axis(ax, np.eye(3)[:, axis])
+            frame_artists(
+                ax, before, linestyle="--", alpha=0.45, linewidth=1.5, label_suffix=PRIME * step
+            )
+            frame_artists(ax, fixed[step], label_suffix=PRIME * (step + 1))
+        rows = (
+            (0.73, f"intrinsic {intrinsic_seq}\n(moving axes)"),
+            (0.29, f"extrinsic {intrinsic_seq[::-1].lower()}\n(fixed axes)"),
         )
-        _highlight_axis(ax, before[:, axis])
-        draw_frame(ax, before, linestyle="--", alpha=0.45, linewidth=1.5, label_suffix="'" * step)
-        draw_frame(ax, moving[step], label_suffix="'" * (step + 1))
-    for step in range(3):
-        before = np.eye(3) if step == 0 else fixed[step - 1]
-        axis = axes[2 - step]
-        degrees_text = f"{np.degrees(values[2 - step]) + 0.0:.4g}°"
-        ax = new_3d_axes(
-            fig,
-            (2, 3, step + 4),
-            title=f"{step + 1}. {degrees_text} about fixed {AXIS_LETTERS[axis]}",
+        for height, words in rows:
+            fig.text(
+                0.01,
+                height,
+                words,
+                rotation=90,
+                fontsize=11,
+                ha="left",
+                va="center",
+                gid="row",
+                multialignment="center",
+            )
+        fig.suptitle(
+            f"{convention_label(convention)} with angles ({degrees_text(values)}): "
+            "the same rotation, read two ways",
+            fontsize=12,
         )
-        _highlight_axis(ax, np.eye(3)[:, axis])
-        draw_frame(ax, before, linestyle="--", alpha=0.45, linewidth=1.5, label_suffix="'" * step)
-        draw_frame(ax, fixed[step], label_suffix="'" * (step + 1))
-    fig.text(0.01, 0.73, f"intrinsic {intrinsic_seq}\n(moving axes)", fontsize=11, va="center")
-    fig.text(
-        0.01,
-        0.27,
-        f"extrinsic {intrinsic_seq[::-1].lower()}\n(fixed axes)",
-        fontsize=11,
-        va="center",
-    )
-    given = values if parsed.intrinsic else values[::-1]
-    fig.suptitle(
-        f"{seq} with angles ({_degrees_text(given)}): the same rotation, read two ways",
-        fontsize=12,
-    )
     return fig

@@ -12,24 +12,30 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._validation import as_vectors
-from eulerlib.sequences import parse_sequence
-
-if TYPE_CHECKING:
-    from matplotlib.animation import FuncAnimation
-    from matplotlib.figure import Figure
-    from mpl_toolkits.mplot3d.axes3d import Axes3D
-
+from eulerlib.conventions import Convention, get_convention
 from eulerlib.plotting._base import (
     AXIS_LETTERS,
     PRIME,
     RING_COLORS,
     RING_RADII,
-    _intrinsic_steps,
-    _partial_products,
-    _style_axes,
+    add_3d_axes,
+    intrinsic_steps,
+    partial_products,
+    pyplot_figure,
+    style_axes,
 )
-from eulerlib.plotting.frames import draw_frame, new_3d_axes
+from eulerlib.plotting._checks import (
+    check_axes3d,
+    check_count,
+    check_figsize,
+    three_angles,
+)
+from eulerlib.plotting.frames import frame_artists
+
+if TYPE_CHECKING:
+    from matplotlib.animation import FuncAnimation
+    from matplotlib.figure import Figure
+    from mpl_toolkits.mplot3d.axes3d import Axes3D
 
 __all__ = [
     "animate_gimbal_lock",
@@ -64,7 +70,7 @@ def _ring_bases(
 
 
 def gimbal_ring_normals(
-    angles: ArrayLike, seq: str = "ZYX", *, degrees: bool = False
+    angles: ArrayLike, seq: str | Convention = "ZYX", *, degrees: bool = False
 ) -> NDArray[np.float64]:
     """Unit normals of the three gimbal rings, outer to inner.
 
@@ -86,9 +92,9 @@ def gimbal_ring_normals(
     ----------
     angles : array_like, shape (3,)
         Angle ``i`` goes with letter ``i`` of ``seq``.
-    seq : str, optional
-        Any of the 24 sequences; an extrinsic one is built as its intrinsic twin (so the outer
-        ring turns with its *last* angle).
+    seq : str or Convention, optional
+        Any of the 24 sequences, or a preset such as ``"rose"``; an extrinsic sequence is built
+        as its intrinsic twin (so the outer ring turns with its *last* angle).
     degrees : bool, optional
         Read ``angles`` in degrees.
 
@@ -96,6 +102,11 @@ def gimbal_ring_normals(
     -------
     ndarray, shape (3, 3)
         Row ``i`` is the unit normal of ring ``i`` (outer, middle, inner).
+
+    Raises
+    ------
+    TypeError, ValueError
+        For a bad argument; the message names the argument.
 
     Examples
     --------
@@ -107,12 +118,13 @@ def gimbal_ring_normals(
     >>> bool(np.isclose(abs(n[0] @ n[1]), 1.0))      # outer and middle rings coplanar
     True
     """
-    axes, values = _intrinsic_steps(angles, seq, degrees)
-    return _ring_bases(axes, _partial_products(axes, values))[2]
+    values = three_angles(angles, degrees)
+    axes, steps = intrinsic_steps(values, get_convention(seq))
+    return _ring_bases(axes, partial_products(axes, steps))[2]
 
 
 def gimbal_ring_points(
-    angles: ArrayLike, seq: str = "ZYX", *, degrees: bool = False, n: int = 120
+    angles: ArrayLike, seq: str | Convention = "ZYX", *, degrees: bool = False, n: int = 120
 ) -> list[NDArray[np.float64]]:
     """Points on the three gimbal rings, outer to inner (see :func:`gimbal_ring_normals`).
 
@@ -120,17 +132,22 @@ def gimbal_ring_points(
     ----------
     angles : array_like, shape (3,)
         Angle ``i`` goes with letter ``i`` of ``seq``.
-    seq : str, optional
-        Any of the 24 sequences.
+    seq : str or Convention, optional
+        Any of the 24 sequences, or a preset such as ``"rose"``.
     degrees : bool, optional
         Read ``angles`` in degrees.
     n : int, optional
-        Points per ring; the first point is repeated at the end so the ring closes.
+        Points per ring, at least 3; the first point is repeated at the end so the ring closes.
 
     Returns
     -------
     list of 3 ndarrays, shape (n, 3)
         Circles of radius 1.0, 0.8 and 0.6 around the origin, each perpendicular to its normal.
+
+    Raises
+    ------
+    TypeError, ValueError
+        For a bad argument; the message names the argument.
 
     Examples
     --------
@@ -140,33 +157,46 @@ def gimbal_ring_points(
     >>> np.linalg.norm(rings[1], axis=1).round(12).min()
     np.float64(0.8)
     """
-    if not isinstance(n, (int, np.integer)) or n < 4:
-        raise ValueError(f"n must be an integer of at least 4, got {n!r}")
-    axes, values = _intrinsic_steps(angles, seq, degrees)
-    first, second, _ = _ring_bases(axes, _partial_products(axes, values))
-    t = np.linspace(0.0, 2.0 * np.pi, int(n))
+    values = three_angles(angles, degrees)
+    convention = get_convention(seq)
+    count = check_count(n, "n", 3)
+    return _ring_points(values, convention, count)
+
+
+def _ring_points(
+    values: NDArray[np.float64], convention: Convention, n: int
+) -> list[NDArray[np.float64]]:
+    """Body of :func:`gimbal_ring_points` for checked angles (radians)."""
+    axes, steps = intrinsic_steps(values, convention)
+    first, second, _ = _ring_bases(axes, partial_products(axes, steps))
+    t = np.linspace(0.0, 2.0 * np.pi, n)
     c, s = np.cos(t)[:, None], np.sin(t)[:, None]
     return [RING_RADII[r] * (c * first[r] + s * second[r]) for r in range(3)]
 
 
-def _draw_gimbal(ax: Axes3D, angles: NDArray[np.float64], seq: str) -> None:
-    """Rings, pivots, first and third axes and the body frame, angles in radians."""
+def _draw_gimbal(ax: Axes3D, values: NDArray[np.float64], convention: Convention) -> None:
+    """Rings, pivots, first and third axes and the body frame, for checked angles (radians)."""
     from eulerlib.gimbal_lock import gimbal_lock_status
 
-    axes, values = _intrinsic_steps(angles, seq, False)
-    frames = _partial_products(axes, values)
-    rings = gimbal_ring_points(angles, seq, n=120)
+    axes, steps = intrinsic_steps(values, convention)
+    frames = partial_products(axes, steps)
+    rings = _ring_points(values, convention, 120)
+    named = convention.name != convention.seq
+    angle_names = convention.angle_names
+    if not convention.parsed.intrinsic:
+        angle_names = angle_names[::-1]
     names = [f"{AXIS_LETTERS[a]}{PRIME * r}" for r, a in enumerate(axes)]
     handles = []
     for r in range(3):
         ring = rings[r]
+        angle = f"{angle_names[r]} " if named else ""
         (line,) = ax.plot(
             ring[:, 0],
             ring[:, 1],
             ring[:, 2],
             color=RING_COLORS[r],
             linewidth=3.0,
-            label=f"ring {r + 1}: {np.degrees(values[r]) + 0.0:.0f}° about {names[r]}",
+            label=f"ring {r + 1}: {angle}{np.degrees(steps[r]) + 0.0:.0f}° about {names[r]}",
         )
         handles.append(line)
         # Pivots: ring r turns about axis a_r of the frame before it (fixed for the outer one).
@@ -186,17 +216,22 @@ def _draw_gimbal(ax: Axes3D, angles: NDArray[np.float64], seq: str) -> None:
             linestyle=":",
             linewidth=1.5,
         )
-    draw_frame(ax, frames[2], scale=0.45, linewidth=1.5)
-    matrix = frames[2]
-    status = gimbal_lock_status(matrix, "".join(AXIS_LETTERS[a] for a in axes).upper())
-    given = np.degrees(values if seq.isupper() else values[::-1]) + 0.0
-    shown = ", ".join(f"{v:.0f}°" for v in given)
+    frame_artists(ax, frames[2], scale=0.45, linewidth=1.5)
+    status = gimbal_lock_status(frames[2], convention)
+    given = np.degrees(values) + 0.0
+    if named:
+        shown = ", ".join(
+            f"{name} {v:.0f}°" for name, v in zip(convention.angle_names, given, strict=True)
+        )
+        heading = f"{convention.name} ({convention.seq}): {shown}"
+    else:
+        heading = f"{convention.seq} ({', '.join(f'{v:.0f}°' for v in given)})"
     between = np.degrees(np.arccos(np.clip(abs(frames[1][:, axes[2]][axes[0]]), 0.0, 1.0)))
     state = (
         "GIMBAL LOCK" if status.locked else f"{float(np.degrees(status.distance)):.0f}° from lock"
     )
     ax.set_title(
-        f"{seq} ({shown})\naxes 1 and 3 are {float(between):.0f}° apart: {state}",
+        f"{heading}\naxes 1 and 3 are {float(between):.0f}° apart: {state}",
         fontsize=9,
     )
     ax.legend(handles=handles, loc="upper left", fontsize=7, frameon=False)
@@ -204,7 +239,7 @@ def _draw_gimbal(ax: Axes3D, angles: NDArray[np.float64], seq: str) -> None:
 
 def plot_gimbal(
     angles: ArrayLike,
-    seq: str = "ZYX",
+    seq: str | Convention = "ZYX",
     *,
     degrees: bool = False,
     ax: Axes3D | None = None,
@@ -215,24 +250,32 @@ def plot_gimbal(
     The rings are the ones of :func:`gimbal_ring_points` (outer purple, middle orange, inner
     cyan), with their pivots as short dark bars, and the axes of the first and third angle as
     dotted lines: at gimbal lock those two lines coincide and the outer and middle rings lie in
-    one plane. The title says how far apart the two axes are.
+    one plane. The title says how far apart the two axes are; the legend, inside the axes,
+    says which angle turns which ring.
 
     Parameters
     ----------
     angles : array_like, shape (3,)
         Angle ``i`` goes with letter ``i`` of ``seq``.
-    seq : str, optional
-        Any of the 24 sequences.
+    seq : str or Convention, optional
+        Any of the 24 sequences, or a preset such as ``"rose"`` (its angle names then appear in
+        the title and the legend).
     degrees : bool, optional
         Read ``angles`` in degrees.
     ax : Axes3D, optional
-        Draw into this axes; by default a new figure with one axes from :func:`new_3d_axes`.
+        Draw into this 3D axes; by default a new figure with one axes from
+        :func:`~eulerlib.plotting.new_3d_axes`.
     figsize : tuple of float, optional
         Size of a new figure.
 
     Returns
     -------
     matplotlib.figure.Figure
+
+    Raises
+    ------
+    TypeError, ValueError
+        For a bad argument, before any figure is created; the message names the argument.
 
     Examples
     --------
@@ -244,19 +287,24 @@ def plot_gimbal(
     'axes 1 and 3 are 0° apart: GIMBAL LOCK'
     >>> plt.close(fig)
     """
-    values = as_vectors(angles, "angles")
-    if values.shape != (3,):
-        raise ValueError(f"angles must be three numbers, got shape {values.shape}")
-    radians = np.radians(values) if degrees else values
-    if ax is None:
-        ax = new_3d_axes(figsize=figsize)
-    _draw_gimbal(ax, radians, seq)
-    figure: Figure = ax.figure
-    return figure
+    values = three_angles(angles, degrees)
+    convention = get_convention(seq)
+    target = None if ax is None else check_axes3d(ax)
+    size = check_figsize(figsize)
+    if target is not None:
+        _draw_gimbal(target, values, convention)
+        figure: Figure = target.figure
+        return figure
+    with pyplot_figure(size) as fig:
+        _draw_gimbal(add_3d_axes(fig, (1, 1, 1), 1.2, None), values, convention)
+    return fig
 
 
 def animate_gimbal_lock(
-    *, seq: str = "ZYX", frames: int = 48, figsize: tuple[float, float] = (5, 5)
+    *,
+    seq: str | Convention = "ZYX",
+    frames: int = 48,
+    figsize: tuple[float, float] = (5, 5),
 ) -> FuncAnimation:
     """An animation that turns the middle gimbal ring into lock.
 
@@ -268,10 +316,10 @@ def animate_gimbal_lock(
 
     Parameters
     ----------
-    seq : str, optional
-        Any of the 24 sequences.
+    seq : str or Convention, optional
+        Any of the 24 sequences, or a preset such as ``"rose"``.
     frames : int, optional
-        Number of frames; the last one is exactly at lock.
+        Number of frames, at least 2; the last one is exactly at lock.
     figsize : tuple of float, optional
         Figure size in inches.
 
@@ -281,6 +329,11 @@ def animate_gimbal_lock(
         On a figure that is not managed by pyplot (nothing to close, nothing shown twice). In a
         notebook show it with ``HTML(anim.to_jshtml())``; save it with
         ``anim.save("gimbal.gif", writer=PillowWriter(fps=8))``.
+
+    Raises
+    ------
+    TypeError, ValueError
+        For a bad argument, before any figure is created; the message names the argument.
 
     Examples
     --------
@@ -295,20 +348,21 @@ def animate_gimbal_lock(
     from matplotlib.animation import FuncAnimation
     from matplotlib.figure import Figure
 
-    parsed = parse_sequence(seq)
-    if not isinstance(frames, (int, np.integer)) or frames < 2:
-        raise ValueError(f"frames must be an integer of at least 2, got {frames!r}")
+    convention = get_convention(seq)
+    count = check_count(frames, "frames", 2)
+    size = check_figsize(figsize)
+    parsed = convention.parsed
     lock = 0.0 if parsed.proper else 90.0
-    middle = np.linspace(90.0 - lock, lock, int(frames))
+    middle = np.linspace(90.0 - lock, lock, count)
     outer_inner = (40.0, 25.0) if parsed.intrinsic else (25.0, 40.0)
-    fig = Figure(figsize=figsize)
-    ax = new_3d_axes(fig)
+    fig = Figure(figsize=size)
+    ax = add_3d_axes(fig, (1, 1, 1), 1.2, None)
 
     def update(value: float) -> list[Any]:
         ax.cla()
-        _style_axes(ax, 1.2, None)
+        style_axes(ax, 1.2, None)
         angles = np.radians([outer_inner[0], value, outer_inner[1]])
-        _draw_gimbal(ax, angles, seq)
+        _draw_gimbal(ax, angles, convention)
         return []
 
     return FuncAnimation(fig, update, frames=middle, interval=120, blit=False, repeat=True)
