@@ -388,7 +388,7 @@ def test_the_warning_carries_its_facts() -> None:
     [(True, TypeError), ("90", TypeError), (None, TypeError), (45, ValueError), (0, ValueError)],
 )
 def test_lock_combination_checks_its_pole(pole: object, error: type[Exception]) -> None:
-    with pytest.raises(error, match="^pole must be"):
+    with pytest.raises(error, match=r"^pole must be"):
         lock_combination("rose", pole)  # type: ignore[arg-type]
 
 
