@@ -50,6 +50,7 @@ takes a ``seq``, with the preset's angle order and lock policy.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -230,13 +231,29 @@ def matrices_to_angles(
     degrees: bool,
     warn: bool,
 ) -> NDArray[np.float64]:
-    """Body of :func:`matrix_to_euler` for a checked stack of matrices ``(..., 3, 3)``."""
+    """Body of :func:`matrix_to_euler` for a stack of matrices ``(..., 3, 3)`` to be checked."""
+    blocks = rotation_entry_blocks(matrices, "R", check)
+    return entry_blocks_to_angles(blocks, matrices.shape[:-2], convention, degrees, warn)
+
+
+def entry_blocks_to_angles(
+    blocks: Iterable[tuple[slice, NDArray[np.float64]]],
+    lead: tuple[int, ...],
+    convention: Convention,
+    degrees: bool,
+    warn: bool,
+) -> NDArray[np.float64]:
+    """Euler angles, shape ``(*lead, 3)``, of rotations given block by block.
+
+    ``blocks`` yields ``(block, entries)`` as :func:`eulerlib._validation.rotation_entry_blocks`
+    does, for rotation matrices or for anything turned into their entries block by block (such
+    as quaternions); the lock policy and the warning are applied here, for both.
+    """
     parsed = convention.parsed
-    lead = matrices.shape[:-2]
     count = math.prod(lead)
     angles, locked = np.empty((count, 3)), np.empty(count, dtype=bool)
     zero_first = (convention.lock_zeroes == "first") == parsed.intrinsic
-    for block, entries in rotation_entry_blocks(matrices, "R", check):
+    for block, entries in blocks:
         angles[block], locked[block] = intrinsic_angles(
             entries, parsed, zero_first, GIMBAL_LOCK_TOLERANCE
         )
