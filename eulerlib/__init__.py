@@ -6,6 +6,13 @@ Conversion Matrix to Euler" (euclideanspace.com); every one of the 24 axis seque
 available through the same ``seq`` strings as SciPy's ``Rotation.from_euler``, and the papers'
 conventions by name (``"rose"``, ``"baker"``, ``"ros"``) wherever a ``seq`` is taken.
 
+Beyond Euler angles, rotations convert to and from the representations that have no gimbal
+lock: axis and angle (:func:`axis_angle_to_matrix`, :func:`matrix_to_axis_angle`), rotation
+vectors (:func:`rotvec_to_matrix`, :func:`matrix_to_rotvec`) and unit quaternions
+(:func:`quaternion_to_matrix`, :func:`matrix_to_quaternion`, :func:`euler_to_quaternion`,
+:func:`quaternion_to_euler`, stored as SciPy stores them); :func:`rotation_angle` and
+:func:`angle_between` measure rotations, and :func:`slerp` interpolates between them.
+
 Every public function checks its arguments once, by the same rules (:mod:`eulerlib._validation`),
 and the same keyword means the same thing everywhere: ``degrees`` (angles in and out in
 degrees), ``validate``/``repair``/``atol`` (how rotation matrices are checked), ``warn`` (the
@@ -23,6 +30,15 @@ array([30., 20., 10.])
 """
 
 from eulerlib._validation import REPAIR_LIMIT, ROTATION_ATOL
+from eulerlib.axis_angle import (
+    AxisAngle,
+    angle_between,
+    axis_angle_to_matrix,
+    matrix_to_axis_angle,
+    matrix_to_rotvec,
+    rotation_angle,
+    rotvec_to_matrix,
+)
 from eulerlib.conventions import CONVENTIONS, Convention, get_convention
 from eulerlib.convert import convert_angles
 from eulerlib.elementary import elementary_rotation, rot_x, rot_y, rot_z
@@ -34,6 +50,7 @@ from eulerlib.gimbal_lock import (
     gimbal_lock_status,
     lock_combination,
 )
+from eulerlib.interpolation import slerp
 from eulerlib.named import (
     HeadingAttitudeBank,
     YawPitchRoll,
@@ -48,6 +65,12 @@ from eulerlib.operations import (
     is_rotation_matrix,
     nearest_rotation,
     rotate_points,
+)
+from eulerlib.quaternion import (
+    euler_to_quaternion,
+    matrix_to_quaternion,
+    quaternion_to_euler,
+    quaternion_to_matrix,
 )
 from eulerlib.sequences import (
     ALL_SEQUENCES,
@@ -69,33 +92,45 @@ __all__ = [
     "REPAIR_LIMIT",
     "ROTATION_ATOL",
     "TAIT_BRYAN",
+    "AxisAngle",
     "Convention",
     "GimbalLockStatus",
     "GimbalLockWarning",
     "HeadingAttitudeBank",
     "Sequence",
     "YawPitchRoll",
+    "angle_between",
+    "axis_angle_to_matrix",
     "change_up_axis",
     "compose",
     "convert_angles",
     "elementary_rotation",
     "euler_to_matrix",
+    "euler_to_quaternion",
     "get_convention",
     "gimbal_lock_status",
     "heading_attitude_bank_to_matrix",
     "invert",
     "is_rotation_matrix",
     "lock_combination",
+    "matrix_to_axis_angle",
     "matrix_to_euler",
     "matrix_to_heading_attitude_bank",
+    "matrix_to_quaternion",
+    "matrix_to_rotvec",
     "matrix_to_yaw_pitch_roll",
     "nearest_rotation",
     "parse_axis",
     "parse_sequence",
+    "quaternion_to_euler",
+    "quaternion_to_matrix",
     "rot_x",
     "rot_y",
     "rot_z",
     "rotate_points",
+    "rotation_angle",
+    "rotvec_to_matrix",
+    "slerp",
     "up_axis_matrix",
     "yaw_pitch_roll_to_matrix",
 ]

@@ -44,33 +44,45 @@ FUNCTIONS = {name: f for name, f in PUBLIC.items() if inspect.isfunction(f)}
 
 #: One valid call of every public function, as (positional arguments, keyword arguments).
 R0 = Rotation.from_euler("ZYX", [0.3, 0.2, 0.1]).as_matrix()
+Q0 = Rotation.from_euler("ZYX", [0.3, 0.2, 0.1]).as_quat()
 VALID_CALLS: dict[str, tuple[tuple[Any, ...], dict[str, Any]]] = {
+    "angle_between": ((R0, R0.T), {}),
+    "axis_angle_to_matrix": (([0.0, 0.0, 1.0], 0.5), {}),
     "change_up_axis": ((R0,), {}),
     "compose": ((R0, R0), {}),
     "convert_angles": (([0.1, 0.2, 0.3], "rose", "baker"), {}),
     "elementary_rotation": (("x", 0.5), {}),
     "euler_to_matrix": (([0.1, 0.2, 0.3],), {}),
+    "euler_to_quaternion": (([0.1, 0.2, 0.3],), {}),
     "get_convention": (("rose",), {}),
     "gimbal_lock_status": ((R0,), {}),
     "heading_attitude_bank_to_matrix": ((0.1, 0.2, 0.3), {}),
     "invert": ((R0,), {}),
     "is_rotation_matrix": ((R0,), {}),
     "lock_combination": (("rose", 90), {}),
+    "matrix_to_axis_angle": ((R0,), {}),
     "matrix_to_euler": ((R0,), {}),
+    "matrix_to_quaternion": ((R0,), {}),
+    "matrix_to_rotvec": ((R0,), {}),
     "matrix_to_heading_attitude_bank": ((R0,), {}),
     "matrix_to_yaw_pitch_roll": ((R0,), {}),
     "nearest_rotation": ((R0,), {}),
     "parse_axis": (("x",), {}),
     "parse_sequence": (("ZYX",), {}),
+    "quaternion_to_euler": ((Q0,), {}),
+    "quaternion_to_matrix": ((Q0,), {}),
     "rot_x": ((0.5,), {}),
     "rot_y": ((0.5,), {}),
     "rot_z": ((0.5,), {}),
     "rotate_points": ((R0, [1.0, 2.0, 3.0]), {}),
+    "rotation_angle": ((R0,), {}),
+    "rotvec_to_matrix": (([0.1, 0.2, 0.3],), {}),
+    "slerp": ((R0, R0.T, [0.0, 0.5, 1.0]), {}),
     "up_axis_matrix": (("y", "z"), {}),
     "yaw_pitch_roll_to_matrix": ((0.1, 0.2, 0.3), {}),
 }
 
-FLAGS = ("degrees", "validate", "repair", "warn", "relabel")
+FLAGS = ("degrees", "validate", "repair", "warn", "relabel", "scalar_first")
 TOLERANCES = ("atol", "tolerance")
 MATRIX_KEYWORDS = ("validate", "repair", "atol")
 
@@ -160,17 +172,25 @@ def test_every_function_that_takes_matrices_takes_validate_repair_atol() -> None
 
 def test_every_function_that_takes_or_returns_angles_takes_degrees() -> None:
     with_angles = {
+        "angle_between",
+        "axis_angle_to_matrix",
         "convert_angles",
         "elementary_rotation",
         "euler_to_matrix",
         "gimbal_lock_status",
         "heading_attitude_bank_to_matrix",
+        "euler_to_quaternion",
+        "matrix_to_axis_angle",
         "matrix_to_euler",
         "matrix_to_heading_attitude_bank",
+        "matrix_to_rotvec",
         "matrix_to_yaw_pitch_roll",
+        "quaternion_to_euler",
         "rot_x",
         "rot_y",
         "rot_z",
+        "rotation_angle",
+        "rotvec_to_matrix",
         "yaw_pitch_roll_to_matrix",
     }
     for name in with_angles:
@@ -428,18 +448,31 @@ def peak_bytes(call: Callable[[], object]) -> int:
 @pytest.mark.parametrize(
     ("name", "call", "output_bytes"),
     [
-        ("convert_angles", lambda a, R: convert_angles(a, "rose", "baker"), 24),
-        ("change_up_axis", lambda a, R: change_up_axis(R), 72),
-        ("is_rotation_matrix", lambda a, R: is_rotation_matrix(R), 1),
-        ("matrix_to_euler", lambda a, R: matrix_to_euler(R), 24),
-        ("euler_to_matrix", lambda a, R: euler_to_matrix(a), 72),
-        ("gimbal_lock_status", lambda a, R: gimbal_lock_status(R), 9),
+        ("convert_angles", lambda a, R, q: convert_angles(a, "rose", "baker"), 24),
+        ("change_up_axis", lambda a, R, q: change_up_axis(R), 72),
+        ("is_rotation_matrix", lambda a, R, q: is_rotation_matrix(R), 1),
+        ("matrix_to_euler", lambda a, R, q: matrix_to_euler(R), 24),
+        ("euler_to_matrix", lambda a, R, q: euler_to_matrix(a), 72),
+        ("gimbal_lock_status", lambda a, R, q: gimbal_lock_status(R), 9),
+        ("matrix_to_quaternion", lambda a, R, q: eulerlib.matrix_to_quaternion(R), 32),
+        ("quaternion_to_matrix", lambda a, R, q: eulerlib.quaternion_to_matrix(q), 72),
+        ("quaternion_to_euler", lambda a, R, q: eulerlib.quaternion_to_euler(q), 24),
+        ("euler_to_quaternion", lambda a, R, q: eulerlib.euler_to_quaternion(a), 32),
+        ("matrix_to_rotvec", lambda a, R, q: eulerlib.matrix_to_rotvec(R), 24),
+        ("rotvec_to_matrix", lambda a, R, q: eulerlib.rotvec_to_matrix(a), 72),
+        ("matrix_to_axis_angle", lambda a, R, q: eulerlib.matrix_to_axis_angle(R), 32),
+        ("axis_angle_to_matrix", lambda a, R, q: eulerlib.axis_angle_to_matrix(a, a[:, 0]), 72),
+        ("rotation_angle", lambda a, R, q: eulerlib.rotation_angle(R), 8),
+        ("angle_between", lambda a, R, q: eulerlib.angle_between(R, R[::-1]), 8),
+        ("slerp", lambda a, R, q: eulerlib.slerp(R, R[::-1], a[:, 0]), 72),
+        ("slerp, one pair", lambda a, R, q: eulerlib.slerp(R[0], R[1], a[:, 0]), 72),
     ],
 )
 def test_no_temporary_as_large_as_the_input(name: str, call: Any, output_bytes: int, rng) -> None:
     n = 400_000
     angles = rng.uniform(-3.0, 3.0, (n, 3))
     R = euler_to_matrix(angles)
-    peak = peak_bytes(lambda: call(angles, R))
+    q = rng.normal(size=(n, 4))
+    peak = peak_bytes(lambda: call(angles, R, q))
     # the output, plus the temporaries of one block (16384 rotations): a few MB at most
     assert peak <= n * output_bytes + 6_000_000, f"{name}: peak {peak / 1e6:.1f} MB"

@@ -1,0 +1,142 @@
+"""Slerp: the shortest way from one rotation to another, at constant angular speed.
+
+Interpolating rotations entry by entry, ``(1 − t) R0 + t R1``, leaves the rotations: halfway
+between a turn and its opposite it gives a matrix that squashes space. Interpolating Euler
+angles stays among rotations but takes a detour, at a speed that changes along the way, and
+near gimbal lock a wild one. The rotations themselves have a natural straight line: turn from
+``R0`` toward ``R1`` about the one axis that takes the first to the second.
+
+With ``R0ᵀ R1`` a turn by θ about the unit axis ``n`` (Euler's rotation theorem,
+:mod:`eulerlib.axis_angle`), spherical linear interpolation is
+
+.. math::
+
+    \\operatorname{slerp}(R_0, R_1; t) = R_0 \\, \\operatorname{Rot}(n, t θ),
+
+the turn from ``R0`` by the fraction ``t`` of θ about ``n``. It starts at ``R0`` (t = 0), ends at
+``R1`` (t = 1), and turns at the constant rate θ per unit of ``t``: equal steps in ``t`` are equal
+angles. It is the geodesic, the shortest path on the space of rotations, for θ ≤ π. In
+quaternions it is K. Shoemake's formula (1985), ``q(t) = (sin((1 − t) Ω) q0 + sin(t Ω) q1) /
+sin Ω`` with ``cos Ω = q0 · q1`` and the sign of ``q1`` chosen so that ``q0 · q1 ≥ 0``: the
+great-circle arc on the sphere of unit quaternions, along which the angle of rotation grows
+twice as fast as the arc, ``θ = 2 Ω``.
+
+eulerlib evaluates the first form: the axis and angle of ``R0ᵀ R1`` come from its canonical
+quaternion, which always takes the short way (θ ≤ π), and ``Rot(n, t θ)`` is built in the
+half-angle form. At t = 0 the result is ``R0`` exactly.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from eulerlib._blocks import BLOCK_SIZE
+from eulerlib._broadcast import broadcast_blocks, broadcast_shape
+from eulerlib._quaternion_kernels import (
+    entries_to_quaternions,
+    product,
+    quaternions_to_entries,
+    transposed_product,
+)
+from eulerlib._unit import TINY, lengths
+from eulerlib._validation import (
+    ROTATION_ATOL,
+    as_float_array,
+    as_rotations,
+    matrix_entries,
+    rotation_check,
+)
+
+__all__ = ["slerp"]
+
+
+def slerp(
+    R0: ArrayLike,
+    R1: ArrayLike,
+    t: ArrayLike,
+    *,
+    validate: bool = True,
+    repair: bool = False,
+    atol: float = ROTATION_ATOL,
+) -> NDArray[np.float64]:
+    """Rotations along the geodesic from ``R0`` to ``R1``, at the fractions ``t`` of the way.
+
+    Parameters
+    ----------
+    R0, R1 : array_like, shape (..., 3, 3)
+        The rotations at ``t = 0`` and at ``t = 1``.
+    t : array_like, shape (...)
+        Fractions of the way. Values outside [0, 1] extrapolate: the turn continues about the
+        same axis at the same rate (``t = 2`` turns twice as far as ``t = 1``, ``t = -1`` as far
+        the other way).
+    validate, repair, atol
+        As in :func:`eulerlib.matrix_to_euler`, for ``R0`` and ``R1``.
+
+    Returns
+    -------
+    ndarray, shape (S, 3, 3)
+        ``S`` is the broadcast of ``R0.shape[:-2]``, ``R1.shape[:-2]`` and ``t.shape``, by
+        numpy's rules. So one pair of rotations and ``t`` of shape ``(k,)`` give ``(k, 3, 3)``;
+        ``n`` pairs and one ``t`` give ``(n, 3, 3)``; ``n`` pairs and ``t`` of shape ``(k, 1)``
+        give ``k`` rotations along each of the ``n`` paths, ``(k, n, 3, 3)``.
+
+    Raises
+    ------
+    TypeError
+        If an argument is not real numbers or a flag is not a bool.
+    ValueError
+        If a shape is wrong, the shapes do not broadcast, a value is not finite, or ``R0`` or
+        ``R1`` is not a rotation within ``atol`` (or cannot be repaired).
+
+    Notes
+    -----
+    ``slerp(R0, R1, t) = R0 Rot(n, t θ)`` with ``(n, θ)`` the axis and angle of ``R0ᵀ R1``
+    (θ in [0, π]): the geodesic, at constant angular speed, equal to SciPy's ``Slerp``. When
+    ``R0`` and ``R1`` are exactly a half turn apart (θ = π) two geodesics are equally short, one
+    about ``n`` and one about ``-n``; eulerlib turns about the axis that
+    :func:`eulerlib.matrix_to_axis_angle` gives ``R0ᵀ R1``, the one whose first nonzero
+    component is positive. Near a half turn the path is unique but depends sensitively on
+    ``R0`` and ``R1``, as any geodesic does there.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from eulerlib import rot_z, rotation_angle
+    >>> path = slerp(np.eye(3), rot_z(90, degrees=True), [0.0, 0.5, 1.0])
+    >>> path.shape
+    (3, 3, 3)
+    >>> np.allclose(path[1], rot_z(45, degrees=True))
+    True
+    >>> rotation_angle(slerp(np.eye(3), rot_z(90, degrees=True), 2.0), degrees=True)
+    array(180.)
+    """
+    check = rotation_check(validate, repair, atol)
+    first = as_rotations(R0, "R0", check)
+    second = as_rotations(R1, "R1", check)
+    fractions = as_float_array(t, "t")
+    lead0, lead1 = first.shape[:-2], second.shape[:-2]
+    shape = broadcast_shape({"R0": lead0, "R1": lead1, "t": fractions.shape})
+    flat0, flat1 = first.reshape(-1, 3, 3), second.reshape(-1, 3, 3)
+    flat_t = fractions.reshape(-1)
+    out = np.empty((math.prod(shape), 9))
+    operands = (lead0, lead1, fractions.shape)
+    # slerp holds about twice as many numbers per rotation as a conversion does (both ends, the
+    # turn between them and the turn to make), so half a block keeps the same few MB in cache
+    for block, (on0, on1, on_t) in broadcast_blocks(shape, operands, BLOCK_SIZE // 2):
+        start = matrix_entries(flat0[on0])
+        relative = entries_to_quaternions(transposed_product(start, matrix_entries(flat1[on1])))
+        # R0ᵀ R1 turns by θ = 2 atan2(|v|, w) about v / |v|. The turn by t θ about the same axis
+        # has a quaternion that is a multiple of (1, tan(t θ / 2) v / |v|).
+        sine = lengths(relative[1:])
+        tangent = np.tan(np.arctan2(sine, relative[0]) * flat_t[on_t])
+        step = np.empty_like(relative)
+        step[0] = 1.0
+        np.multiply(relative[1:], tangent / np.maximum(sine, TINY), out=step[1:])
+        turn = np.empty_like(start)
+        quaternions_to_entries(step, turn)
+        product(start, turn, out[block].T)
+        out[block] += 0.0  # no negative zeros
+    return out.reshape(*shape, 3, 3)
