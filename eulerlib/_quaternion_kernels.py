@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from eulerlib._euler_kernels import frame
-from eulerlib._trig import sin_cos
+from eulerlib._trig import half_angle_pair
 from eulerlib._unit import TINY, lengths
 from eulerlib.sequences import Sequence
 
@@ -227,12 +227,15 @@ def euler_to_quaternions(values: Array, parsed: Sequence, degrees: bool) -> Arra
     As for the matrices (:func:`eulerlib._euler_kernels.fill_matrices`), the sequence is
     relabelled as x-y-z or x-y-x by the signed permutation ``P``; the quaternion of
     ``R = P M Pᵀ`` is that of ``M`` with its vector part turned by ``P``. The quaternion of ``M``
-    is the product of three elementary ones, ``(cos(a/2), sin(a/2) e)``, written out.
+    is the product of three elementary ones, ``(cos(a/2), sin(a/2) e)``, written out; their
+    half-angle cosines and sines come from :func:`eulerlib._trig.half_angle_pair`, so that the
+    quarter turns of degrees have equal components, as they should.
     """
     (i, j, k), sign = frame(parsed)
-    s, c = sin_cos(np.ascontiguousarray(values.T) * 0.5, degrees)
-    s1, s2, s3 = s
-    c1, c2, c3 = c
+    a, b = half_angle_pair(np.ascontiguousarray(values.T), degrees)
+    scale = np.sqrt(1.0 / (a * a + b * b))  # exactly √½ for the quarter turns of degrees
+    c1, c2, c3 = a * scale  # cos(angle / 2)
+    s1, s2, s3 = b * scale  # sin(angle / 2)
     q = np.empty((4, values.shape[0]))
     if parsed.proper:  # q_x(a) q_y(b) q_x(c)
         q[0] = c2 * (c1 * c3 - s1 * s3)
