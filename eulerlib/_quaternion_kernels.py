@@ -175,7 +175,9 @@ def rotation_angles(e: Array) -> Array:
     np.subtract(r21, r12, out=skew[0])
     np.subtract(r02, r20, out=skew[1])
     np.subtract(r10, r01, out=skew[2])
-    angle: Array = np.arctan2(lengths(skew), (r00 + r11) + (r22 - 1.0))
+    trace = r00 + r11
+    trace += r22  # summed in the order of relative_angles, which then agrees to the last bit
+    angle: Array = np.arctan2(lengths(skew), trace - 1.0)
     return angle
 
 
