@@ -219,6 +219,15 @@ def slerp_of(Q0: Matrix, Q1: Matrix, t: float) -> Matrix:
         return _multiply(Q0, matrix_of_axis_angle(axis, angle * MP(float(t))))
 
 
+def slerp_other_way_of(Q0: Matrix, Q1: Matrix, t: float) -> Matrix:
+    """The geodesic the long way round: ``Q0 Rot(n, −t (2π − θ))``, the other answer when
+    ``Q0ᵀ Q1`` is a half turn (θ = π), and nearly one within rounding of it."""
+    with mpmath.workdps(DIGITS + 10):
+        axis, angle = axis_angle_of(_multiply(_transpose(Q0), Q1))
+        turn = -(2 * mpmath.pi - angle) * MP(float(t))
+        return _multiply(Q0, matrix_of_axis_angle(axis, turn))
+
+
 def transpose_product(Q0: Matrix, Q1: Matrix) -> Matrix:
     return _multiply(_transpose(Q0), Q1)
 

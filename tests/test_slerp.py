@@ -67,7 +67,7 @@ def test_near_a_half_turn_against_mpmath(below_pi: float, rng) -> None:
             exact = mp.slerp_of(Q0, Q1, t)
             # near a half turn the path depends on the last bits of R0 and R1 (its axis is
             # ill-conditioned); the exact path of these two float matrices is the reference
-            assert mp.absolute_ulps(slerp(R0, R1, t), exact) <= 16.0, (below_pi, t)
+            assert mp.absolute_ulps(slerp(R0, R1, t), exact) <= 6.0, (below_pi, t)
 
 
 @pytest.mark.parametrize("angle", [1e-300, 1e-100, 1e-12, 1e-6, 0.3, 2.0])
@@ -79,7 +79,7 @@ def test_tiny_and_ordinary_turns_and_extrapolation_against_mpmath(angle: float, 
         Q0, Q1 = mp.polar(R0), mp.polar(R1)
         for t in (-1.5, 0.0, 0.3, 0.5, 1.0, 2.5):
             exact = mp.slerp_of(Q0, Q1, t)
-            assert mp.absolute_ulps(slerp(R0, R1, t), exact) <= 4.0, (angle, t)
+            assert mp.absolute_ulps(slerp(R0, R1, t), exact) <= 6.0, (angle, t)
 
 
 # --- endpoints, exact places and the documented choice -------------------------------------------
