@@ -95,14 +95,16 @@ def quaternions_to_entries(q: Array | tuple[Array, Array, Array, Array], out: Ar
 
     ``q`` holds the rows w, x, y, z (shape ``(4, n)``, or four rows). Row ``3 i + j`` of ``out``
     receives ``R[i, j]``. Returns ``|q|²``; where it is 0, infinite or subnormal, the entries are
-    not meaningful and the caller must redo those columns (:func:`eulerlib._unit.in_range`).
+    not meaningful and the caller must redo those columns, scaled by
+    :func:`eulerlib._unit.scaled_to_unit_size`.
 
     ``R = I + 2 w [v]× + 2 [v]×²`` for a unit quaternion is evaluated in the form that holds for
     any length: on the diagonal ``R[0, 0] = (w² − z² + x² − y²) / |q|²``, ``R[1, 1] = (w² − z² −
     x² + y²) / |q|²``, ``R[2, 2] = (w² + z² − x² − y²) / |q|²``, off it ``R[0, 1] = 2(xy − wz) /
-    |q|²`` and so on. Nothing is subtracted from 1 and ``q`` is never rounded by a
-    normalization, so every entry is accurate to about one unit in the last place, and
-    quaternions with small integer components give exact matrices.
+    |q|²`` and so on, each a short sum of products times ``1 / |q|²``. Nothing is subtracted
+    from 1 and ``q`` is never rounded by a normalization, so every entry is accurate to about
+    one unit in the last place, and a quaternion such as ``(1, 0, 0, 1)``, whose squared length
+    is a power of two, gives its matrix exactly.
 
     The arithmetic runs in eight scratch rows, reused step by step, so that a block's working
     set stays in the processor's cache.

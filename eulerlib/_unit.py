@@ -6,9 +6,11 @@ vector of length 1e-200 would have length 0) and above about 1e154 they overflow
 vectors are scaled by a power of two first, which is exact, so every finite vector gets its
 length to the same accuracy, at the cost of one comparison for all the others.
 
-A rotation axis and a quaternion are normalized before use. Only the zero vector cannot be;
-:func:`in_range` and :func:`unit_components` refuse it with the argument's name and the index of
-the vector.
+A rotation axis and a quaternion may have any length, since only their direction matters, and
+the formulas that use them divide by their squared length (or length) once.
+:func:`scaled_to_unit_size` scales them exactly to a size near 1 where that is needed, and
+refuses the zero vector, which has no direction, with the argument's name and the index of the
+vector.
 """
 
 from __future__ import annotations
@@ -30,7 +32,7 @@ TINY = float(np.finfo(np.float64).smallest_subnormal)
 
 
 def squared_lengths(components: Array) -> Array:
-    """``x² + y² + …`` of each column; may overflow or underflow (see :func:`in_range`)."""
+    """``x² + y² + …`` of each column; may overflow or underflow (see :func:`lengths`)."""
     with np.errstate(over="ignore"):  # the squares of huge vectors: redone by the caller
         total: Array = components[0] * components[0]
         for row in components[1:]:
@@ -70,43 +72,27 @@ def lengths(components: Array) -> Array:
     return length
 
 
-def in_range(
+def scaled_to_unit_size(
     components: Array, name: str, what: str, lead: tuple[int, ...], selection: Selection
 ) -> tuple[Array, Array]:
-    """Columns of ``components`` scaled where needed, and their squared lengths; no zero column.
+    """Each column of ``components`` times the power of two that puts its largest entry in
+    [0.5, 1), and the squared lengths of the results (between 0.25 and the number of rows).
 
-    A column whose squared length would underflow or overflow is multiplied by a power of two
-    (exactly) so that it does not; the others are returned as they are. A zero column raises
-    ``ValueError`` naming ``name`` and the index of that vector in the caller's array of
-    leading shape ``lead``, from which ``selection`` took the columns (as
-    :func:`eulerlib._broadcast.broadcast_blocks` selects them). ``what`` says what the vector
-    is, for the message.
+    Scaling by a power of two is exact, so the direction of every vector is kept to the last
+    bit, and whatever is later computed from the scaled vectors can neither overflow nor
+    underflow. A zero column raises ``ValueError`` naming ``name`` and the index of that vector
+    in the caller's array of leading shape ``lead``, from which ``selection`` took the columns
+    (as :func:`eulerlib._broadcast.broadcast_blocks` selects them). ``what`` says what the
+    vector is, for the message.
     """
-    squared = squared_lengths(components)
-    redo = out_of_range(squared)
-    if redo.size:
-        components = components.copy()
-        part = components[:, redo]
-        part = np.ldexp(part, -_exponents(part))
-        components[:, redo] = part
-        squared[redo] = squared_lengths(part)
-        zero = np.flatnonzero(squared == 0.0)
-        if zero.size:
-            where = _index_text(lead, selected_index(selection, int(zero[0])))
-            raise ValueError(
-                f"{name}{where} is zero: {what} cannot be normalized, since a zero vector has "
-                "no direction"
-            )
-    return components, squared
-
-
-def unit_components(
-    components: Array, name: str, what: str, lead: tuple[int, ...], selection: Selection
-) -> Array:
-    """Each column of ``components`` (shape ``(k, n)``) divided by its length.
-
-    A zero column raises ``ValueError`` as in :func:`in_range`.
-    """
-    scaled, squared = in_range(components, name, what, lead, selection)
-    unit: Array = scaled / np.sqrt(squared)
-    return unit
+    exponent = _exponents(components)
+    scaled = np.ldexp(components, -exponent)
+    squared = squared_lengths(scaled)
+    zero = np.flatnonzero(squared == 0.0)
+    if zero.size:
+        where = _index_text(lead, selected_index(selection, int(zero[0])))
+        raise ValueError(
+            f"{name}{where} is zero: {what} cannot be normalized, since a zero vector has no "
+            "direction"
+        )
+    return scaled, squared

@@ -59,7 +59,7 @@ from eulerlib._quaternion_kernels import (
     unit_axes,
 )
 from eulerlib._trig import half_angle_pair
-from eulerlib._unit import TINY, in_range, lengths
+from eulerlib._unit import TINY, lengths, scaled_to_unit_size
 from eulerlib._validation import (
     ROTATION_ATOL,
     as_float_array,
@@ -154,9 +154,10 @@ def axis_angle_to_matrix(
     out = np.empty((math.prod(shape), 9))
     for block, (on_axis, on_angle) in broadcast_blocks(shape, (axis_lead, angles.shape)):
         rows = np.ascontiguousarray(flat_axes[on_axis].T)
-        rows, squared = in_range(rows, "axis", "a rotation axis", axis_lead, on_axis)
+        rows, squared = scaled_to_unit_size(rows, "axis", "a rotation axis", axis_lead, on_axis)
         a, b = half_angle_pair(flat_angles[on_angle], in_degrees)
-        # (a |n|, b n) is a multiple of (cos(θ/2), sin(θ/2) n / |n|)
+        # (a |n|, b n) is a multiple of (cos(θ/2), sin(θ/2) n / |n|), and with |n| near 1 its
+        # squared length can neither overflow nor underflow
         q = np.empty((4, rows.shape[1]))
         np.multiply(a, np.sqrt(squared), out=q[0])
         np.multiply(rows, b, out=q[1:])

@@ -60,7 +60,7 @@ from eulerlib._quaternion_kernels import (
     euler_to_quaternions,
     quaternions_to_entries,
 )
-from eulerlib._unit import in_range, out_of_range
+from eulerlib._unit import out_of_range, scaled_to_unit_size
 from eulerlib._validation import (
     ROTATION_ATOL,
     as_float_array,
@@ -108,16 +108,15 @@ def quaternion_entry_blocks(
     flat = quaternions.reshape(-1, 4)
     order = _ORDER[scalar_first]
     for block in block_slices(flat.shape[0]):
-        stored_rows = flat[block].T
-        rows = (stored_rows[order[0]], stored_rows[order[1]], stored_rows[order[2]],
-                stored_rows[order[3]])  # fmt: skip
+        stored_rows = flat[block].T  # a view: the rows are read where they are
+        w, x, y, z = (stored_rows[i] for i in order)
         entries = np.empty((9, stored_rows.shape[1]))
         with np.errstate(all="ignore"):  # zero, tiny or huge quaternions are redone below
-            squared = quaternions_to_entries(rows, entries)
+            squared = quaternions_to_entries((w, x, y, z), entries)
         redo = out_of_range(squared)
         if redo.size:
             part = np.ascontiguousarray(stored_rows[list(order)][:, redo])
-            part, _ = in_range(part, name, "a quaternion", lead, block.start + redo)
+            part, _ = scaled_to_unit_size(part, name, "a quaternion", lead, block.start + redo)
             fixed = np.empty((9, redo.size))
             quaternions_to_entries(part, fixed)
             entries[:, redo] = fixed

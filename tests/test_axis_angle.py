@@ -145,6 +145,21 @@ def test_huge_angles(angle: float, degrees: bool, rng) -> None:
     del v
 
 
+@pytest.mark.parametrize("scale", [5e-324, 1e-300, 1e-150, 1.0, 1e150, 1e300])
+def test_axes_of_any_length(scale: float, rng) -> None:
+    """Only the direction of the axis counts, at any scale, tiny and half turns included."""
+    for angle in (np.pi, 3.0, 1.0, 1e-8, 1e-300):
+        direction = rng.normal(size=3)
+        axis = direction * scale if scale > 1e-320 else np.array([0.0, scale, 0.0])
+        exact = mp.matrix_of_axis_angle(mp.mp_vector(axis), mp.MP(angle))
+        R = axis_angle_to_matrix(axis, angle)
+        assert mp.absolute_ulps(R, exact) <= 2.0, (scale, angle)
+        if angle < 1e-4:  # the small entries carry the whole turn: relative accuracy
+            for i, j in [(0, 1), (0, 2), (1, 0), (1, 2), (2, 0), (2, 1)]:
+                if exact[i][j] != 0:
+                    assert mp.ulps(R[i, j], exact[i][j]) <= 4.0, (scale, angle, i, j)
+
+
 def test_angle_between_against_mpmath(rng, hard_cases) -> None:
     matrices = [R for _, R in hard_cases]
     for index in range(0, len(matrices) - 1, 3):
