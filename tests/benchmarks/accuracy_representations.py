@@ -137,7 +137,8 @@ def main(argv: list[str] | None = None) -> None:
     header = f"{'conversion':<36}{'group':<26}{'worst':>10}"
     print(header)
     print("-" * len(header))
-    for (what, group), error in worst.items():
+    conversions = list(dict.fromkeys(what for what, _ in worst))  # in the order first met
+    for (what, group), error in sorted(worst.items(), key=lambda k: conversions.index(k[0][0])):
         print(f"{what:<36}{group:<26}{error:>10.2f}")
 
     R = np.concatenate([Rotation.random(args.n, rng=rng).as_matrix(),
