@@ -84,7 +84,8 @@ def entries_to_quaternions(e: Array) -> Array:
                 p, r, sign = _OFF_DIAGONAL[min(k, other), max(k, other)]
                 np.multiply(part[r], sign, out=row[other])
                 row[other] += part[p]
-        row *= 0.5 / np.sqrt(row[k])
+        # divide by 2 √d as √d / (2 d): the largest component is then √d / 2, correctly rounded
+        row *= np.sqrt(row[k]) / (2.0 * row[k])
         q[:, chosen] = row
     make_canonical(q)
     return q
