@@ -232,15 +232,15 @@ def euler_to_quaternions(values: Array, parsed: Sequence, degrees: bool) -> Arra
     As for the matrices (:func:`eulerlib._euler_kernels.fill_matrices`), the sequence is
     relabelled as x-y-z or x-y-x by the signed permutation ``P``; the quaternion of
     ``R = P M Pᵀ`` is that of ``M`` with its vector part turned by ``P``. The quaternion of ``M``
-    is the product of three elementary ones, ``(cos(a/2), sin(a/2) e)``, written out; their
-    half-angle cosines and sines come from :func:`eulerlib._trig.half_angle_pair`, so that the
-    quarter turns of degrees have equal components, as they should.
+    is the product of three elementary ones, ``(cos(a/2), sin(a/2) e)``, written out. Each is
+    taken as the multiple ``(c, s)`` of it that :func:`eulerlib._trig.half_angle_pair` gives
+    (``(1, tan(a/2))``, or small integers for the quarter turns of degrees), and the product is
+    normalized once at the end, so that quarter turns give their quaternions correctly rounded.
     """
     (i, j, k), sign = frame(parsed)
-    a, b = half_angle_pair(np.ascontiguousarray(values.T), degrees)
-    scale = np.sqrt(1.0 / (a * a + b * b))  # exactly √½ for the quarter turns of degrees
-    c1, c2, c3 = a * scale  # cos(angle / 2)
-    s1, s2, s3 = b * scale  # sin(angle / 2)
+    c, s = half_angle_pair(np.ascontiguousarray(values.T), degrees)
+    c1, c2, c3 = c
+    s1, s2, s3 = s
     q = np.empty((4, values.shape[0]))
     if parsed.proper:  # q_x(a) q_y(b) q_x(c)
         q[0] = c2 * (c1 * c3 - s1 * s3)
@@ -256,5 +256,8 @@ def euler_to_quaternions(values: Array, parsed: Sequence, degrees: bool) -> Arra
         q[1 + k] = c1c2 * s3 + s1s2 * c3
     if sign[2] < 0:
         q[1 + k] *= -1.0
+    squared = c * c
+    squared += s * s
+    q *= np.sqrt(1.0 / (squared[0] * squared[1] * squared[2]))  # |q|² is the product
     make_canonical(q)
     return q

@@ -176,9 +176,11 @@ def test_quarter_turns_in_degrees_are_exact() -> None:
     assert_array_equal(euler_to_quaternion([90, 0, 0], degrees=True), [0, 0, s, s])
     for turns in (45 * 2.0**60, 45 * 2.0**59, -(45 * 2.0**70)):  # 720° · 2⁵⁶, 360° · 2⁵⁶, …
         assert_array_equal(euler_to_quaternion([turns, 0, 0], degrees=True), [0, 0, 0, 1])
-    for angles in ([90, 0, 0], [0, 90, 0], [0, 0, -90], [90, 180, 270]):
+    for angles in ([90, 0, 0], [0, 90, 0], [0, 0, -90], [90, 180, 270], [90, 90, 0]):
         q = euler_to_quaternion(angles, degrees=True)
-        assert_array_equal(quaternion_to_matrix(q), euler_to_matrix(angles, degrees=True))
+        R = euler_to_matrix(angles, degrees=True)
+        assert_array_equal(quaternion_to_matrix(q), R)
+        assert_array_equal(matrix_to_quaternion(R), q)
 
 
 # --- round trips -----------------------------------------------------------------------------
