@@ -14,7 +14,8 @@ import PIL
 import pytest
 from PIL import Image
 
-from eulerlib import cli, figures
+from eulerlib import cli
+from eulerlib.course import commands, figures
 
 ROOT = Path(__file__).resolve().parents[1]
 COMMITTED = ROOT / "figures"
@@ -123,10 +124,21 @@ def test_console_command_writes_the_same_files(tmp_path: Path, fresh: Path) -> N
         assert (out / name).read_bytes() == (fresh / name).read_bytes(), name
 
 
-def test_figures_subcommand_is_registered_with_a_default_folder() -> None:
+def test_figures_subcommand_is_registered_without_a_default_folder() -> None:
     args = cli.build_parser().parse_args(["figures"])
-    assert args.out == Path("figures")
-    assert args.run is figures.run
+    assert args.out is None  # figures/ of the current directory, when it is there
+    assert args.run is commands.run_figures
+
+
+def test_without_a_figures_folder_the_command_fails_in_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    assert cli.main(["figures"]) == 1
+    lines = capsys.readouterr().err.splitlines()
+    assert len(lines) == 1
+    assert "no figures/ folder here" in lines[0] and "--out" in lines[0]
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_out_must_not_be_a_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
