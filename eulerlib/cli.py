@@ -1,49 +1,52 @@
 """The ``eulerlib`` command line.
 
-Subcommands live in their own modules, each with ``configure_parser(parser)`` (which sets
-``run`` as a default) and ``run(args) -> int``; heavy imports happen inside ``run``:
+Each subcommand is set up by a function of its own module that adds the arguments to its
+sub-parser and sets ``run`` as a default (``run(args) -> int``); heavy imports happen inside
+``run``, so ``eulerlib --help`` and ``eulerlib convert`` need numpy only:
 
-* ``eulerlib convert``: angles in one convention into a matrix and angles in another;
-* ``eulerlib figures``: regenerate every figure of the course into ``figures/``;
-* ``eulerlib notebooks``: re-execute and normalize the notebooks, or make student copies.
+* ``eulerlib convert``: angles in one convention into a matrix and angles in another
+  (:mod:`eulerlib.convert_cli`);
+* ``eulerlib figures``: redraw every figure of the course (:mod:`eulerlib.course.commands`);
+* ``eulerlib notebooks``: make student copies of the notebooks, or re-execute and normalize
+  them (:mod:`eulerlib.course.commands`).
 
-Bad arguments end with a one-line message on standard error and a non-zero exit status, never
-a traceback.
+Bad arguments, and a command whose optional dependencies are not installed, end with a one-line
+message on standard error and a non-zero exit status, never a traceback.
 """
 
 from __future__ import annotations
 
 import argparse
-import importlib
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 
-#: Subcommand name → (module, one-line help).
-SUBCOMMANDS = {
-    "convert": ("eulerlib.convert_cli", "convert angles and matrices between conventions"),
-    "figures": ("eulerlib.figures", "regenerate every figure of the course"),
-    "notebooks": ("eulerlib.course", "refresh the course notebooks or make student copies"),
+from eulerlib import convert_cli
+from eulerlib._extras import MissingExtraError
+from eulerlib.course import commands as course_commands
+
+#: Subcommand name → (function that configures its sub-parser, one-line help).
+SUBCOMMANDS: dict[str, tuple[Callable[[argparse.ArgumentParser], None], str]] = {
+    "convert": (convert_cli.configure_parser, "convert angles and matrices between conventions"),
+    "figures": (course_commands.configure_figures, "redraw every figure of the course"),
+    "notebooks": (
+        course_commands.configure_notebooks,
+        "make student copies of the course notebooks, or refresh them",
+    ),
 }
 
 
 def build_parser() -> argparse.ArgumentParser:
-    """The argument parser, with one sub-parser per available subcommand."""
+    """The argument parser, with one sub-parser per subcommand."""
     parser = argparse.ArgumentParser(
         prog="eulerlib",
         description="Euler angles and rotation matrices: the command line of the eulerlib course.",
     )
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
-    for name, (module_name, summary) in SUBCOMMANDS.items():
-        try:
-            module = importlib.import_module(module_name)
-        except ModuleNotFoundError as error:
-            if error.name != module_name:
-                raise
-            continue  # subcommand not part of this version
+    for name, (configure, summary) in SUBCOMMANDS.items():
         sub = subparsers.add_parser(
             name, help=summary, description=summary[0].upper() + summary[1:] + "."
         )
-        module.configure_parser(sub)
+        configure(sub)
     return parser
 
 
@@ -56,7 +59,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 0
     try:
         status: int = args.run(args)
-    except (ValueError, TypeError, OSError) as error:
+    except (ValueError, TypeError, OSError, MissingExtraError) as error:
         print(f"eulerlib {args.command}: error: {error}", file=sys.stderr)
         return 1
     return status

@@ -1,35 +1,29 @@
 """The course as a whole: notebook hygiene, exercises with self-checks, and the course tooling.
 
-Every test that concerns notebooks runs over ``notebooks/*.ipynb``, so a notebook added to the
-course is covered without touching this file. The notebooks are executed once per session
-(module-scoped fixture), which serves both the "does not write into the repository" and the
-"executes within a few seconds" checks.
+Every test that concerns the course notebooks runs over ``notebooks/*.ipynb``, so a notebook
+added to the course is covered without touching this file. These tests read the stored
+notebooks and never execute them: nbval executes each notebook once per session, and the checks
+around the session (``tests/conftest.py``) see that no notebook writes into the repository or
+takes too long. The tooling (refresh, student copies) is exercised on small notebooks built
+here.
 """
 
 from __future__ import annotations
 
 import ast
-import os
+import copy
 import re
-import shutil
-import subprocess
 import sys
-import time
 from dataclasses import dataclass
 from pathlib import Path
 
 import nbformat
 import pytest
-from nbclient import NotebookClient
 
 import eulerlib.checks
-from eulerlib.course import (
-    KERNELSPEC,
-    is_normalized,
-    normalize_notebook,
-    student_copy,
-    write_student_copies,
-)
+from eulerlib import cli
+from eulerlib.course.notebook_form import KERNELSPEC, is_normalized, normalize_notebook
+from eulerlib.course.student import student_copy, write_student_copies
 
 REPO = Path(__file__).resolve().parents[1]
 NOTEBOOK_DIR = REPO / "notebooks"
@@ -38,25 +32,8 @@ IDS = [path.name for path in NOTEBOOKS]
 
 EXERCISE_TAGS = ("exercise", "solution", "check")
 CHECKERS = frozenset(eulerlib.checks.__all__) - {"CheckResult"}
-
-#: Longest accepted time to run a notebook's cells (kernel start-up not included). The course
-#: rule is "well under 10 s" on an ordinary laptop; shared CI runners can be two or three times
-#: slower, so the guard sits at twice the rule. It catches a notebook that does heavy work (a big
-#: SymPy simplify, hundreds of animation frames) without turning into a benchmark: timings are
-#: measured on one run and the bound is far above what a healthy notebook needs.
-MAX_SECONDS = 20.0
-
-#: Folders whose content a notebook run may legitimately touch (tool caches, never the course).
-IGNORED_DIRS = {
-    ".git",
-    ".venv",
-    "__pycache__",
-    ".ipynb_checkpoints",
-    ".pytest_cache",
-    ".mypy_cache",
-    ".ruff_cache",
-    ".hypothesis",
-}
+#: The folding state of JupyterLab that the normal form keeps, besides the tags.
+FOLDING = {"source_hidden", "outputs_hidden"}
 
 notebook_params = pytest.mark.parametrize("path", NOTEBOOKS, ids=IDS)
 
@@ -145,30 +122,6 @@ def exercises_of(notebook: nbformat.NotebookNode) -> list[Exercise]:
     return groups
 
 
-def snapshot(root: Path) -> dict[str, tuple[int, int]]:
-    """Every file under ``root`` (tool caches left out) with its size and modification time."""
-    files = {}
-    for folder, dirs, names in os.walk(root):
-        dirs[:] = [d for d in dirs if d not in IGNORED_DIRS and not d.endswith(".egg-info")]
-        for name in names:
-            path = Path(folder, name)
-            stat = path.stat()
-            files[str(path.relative_to(root))] = (stat.st_size, stat.st_mtime_ns)
-    return files
-
-
-def run_cli(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
-    """The real command line, as a user runs it."""
-    return subprocess.run(
-        [sys.executable, "-m", "eulerlib", *args],
-        cwd=cwd,
-        capture_output=True,
-        text=True,
-        timeout=600,
-        check=False,
-    )
-
-
 # --- stored form -------------------------------------------------------------------------------
 
 
@@ -201,8 +154,10 @@ def test_notebook_metadata_and_counts(path: Path) -> None:
     counts = [cell.execution_count for cell in notebook.cells if cell.cell_type == "code"]
     assert counts == list(range(1, len(counts) + 1)), f"execution counts {counts}"
     for index, cell in enumerate(notebook.cells):
-        extra = set(cell.get("metadata", {})) - {"tags"}
+        extra = set(cell.get("metadata", {})) - {"tags", "jupyter"}
         assert not extra, f"cell {index} carries stray metadata {sorted(extra)}"
+        folding = set(cell.get("metadata", {}).get("jupyter", {}))
+        assert folding <= FOLDING, f"cell {index} carries stray metadata {sorted(folding)}"
         for output in cell.get("outputs", []):
             if output.get("output_type") == "execute_result":
                 assert output["execution_count"] == cell.execution_count
@@ -286,135 +241,45 @@ def test_stored_checks_report_correct(path: Path) -> None:
         )
 
 
-# --- execution: no writes, a few seconds -------------------------------------------------------
-
-
-@dataclass
-class Run:
-    seconds: float
-    error: str | None
-
-
-@pytest.fixture(scope="module")
-def executed(
-    tmp_path_factory: pytest.TempPathFactory,
-) -> tuple[dict[str, Run], dict[str, tuple[int, int]], dict[str, tuple[int, int]]]:
-    """Execute every notebook once, timing its cells, and list the files around it.
-
-    The notebooks run in a copy of the repository's layout (sources, notebooks, figures, tests;
-    no version control or environment), each with its own folder as working directory, as
-    nbval and the refresh command run them. A file a notebook writes, next to itself or
-    anywhere in the tree through a relative path, then shows up in the copy's listing, and the
-    check does not depend on what else happens in the working tree meanwhile.
-    """
-    root = tmp_path_factory.mktemp("course") / "repository"
-    shutil.copytree(REPO, root, ignore=shutil.ignore_patterns(*IGNORED_DIRS, "*.egg-info"))
-    folder = root / NOTEBOOK_DIR.relative_to(REPO)
-    before = snapshot(root)
-    runs = {}
-    for name in IDS:
-        notebook = read(folder / name)
-        client = NotebookClient(
-            notebook,
-            timeout=300,
-            kernel_name="python3",
-            resources={"metadata": {"path": str(folder)}},
-        )
-        seconds, error = 0.0, None
-        with client.setup_kernel():
-            for index, cell in enumerate(notebook.cells):
-                if cell.cell_type != "code":
-                    continue
-                start = time.perf_counter()
-                try:
-                    client.execute_cell(cell, index)
-                except Exception as exc:  # recorded, reported by the test of this notebook
-                    error = f"cell {index}: {type(exc).__name__}: {str(exc)[-500:]}"
-                    break
-                finally:
-                    seconds += time.perf_counter() - start
-        runs[name] = Run(seconds, error)
-    after = snapshot(root)
-    return runs, before, after
-
-
-def test_notebooks_do_not_write_into_the_repository(executed) -> None:
-    _, before, after = executed
-    created = sorted(set(after) - set(before))
-    deleted = sorted(set(before) - set(after))
-    changed = sorted(p for p in set(before) & set(after) if before[p] != after[p])
-    assert not (created or deleted or changed), (
-        f"running the notebooks changed the repository: created {created}, "
-        f"deleted {deleted}, modified {changed}"
-    )
+# --- student copies of the course notebooks ---------------------------------------------------
 
 
 @notebook_params
-def test_notebook_executes_within_a_few_seconds(path: Path, executed) -> None:
-    run = executed[0][path.name]
-    assert run.error is None, f"{path.name} failed: {run.error}"
-    assert run.seconds < MAX_SECONDS, f"{path.name} took {run.seconds:.1f} s to execute"
-
-
-# --- student copies ----------------------------------------------------------------------------
-
-
-@pytest.fixture(scope="module")
-def student_dir(tmp_path_factory) -> Path:
-    out = tmp_path_factory.mktemp("student")
-    result = run_cli("notebooks", "student", "--out", str(out), cwd=REPO)
-    assert result.returncode == 0, result.stderr
-    assert re.fullmatch(r"wrote \d+ student copies to .*\n", result.stdout), result.stdout
-    return out
-
-
-@notebook_params
-def test_student_copy_has_no_solutions_and_no_outputs(path: Path, student_dir: Path) -> None:
-    copy_path = student_dir / path.name
-    assert copy_path.is_file()
-    original, copy = read(path), read(copy_path)
-    assert not any("solution" in tags_of(cell) for cell in copy.cells)
-    assert not any(cell.get("outputs") for cell in copy.cells if cell.cell_type == "code")
+def test_student_copy_has_no_solutions_and_no_outputs(path: Path) -> None:
+    original = read(path)
+    student = student_copy(original)
+    nbformat.validate(student)
+    assert not any("solution" in tags_of(cell) for cell in student.cells)
+    assert not any(cell.get("outputs") for cell in student.cells if cell.cell_type == "code")
+    assert all(cell.execution_count is None for cell in student.cells if cell.cell_type == "code")
     kept = [c.source for c in original.cells if "solution" not in tags_of(c)]
-    assert [c.source for c in copy.cells] == kept
+    assert [c.source for c in student.cells] == kept
     for tag in ("exercise", "check"):
         count = sum(tag in tags_of(cell) for cell in original.cells)
-        assert sum(tag in tags_of(cell) for cell in copy.cells) == count
+        assert sum(tag in tags_of(cell) for cell in student.cells) == count
 
 
-def test_student_copy_says_not_yet_at_the_first_exercise(student_dir: Path) -> None:
-    """Execute a student copy cell by cell up to the first check after an exercise."""
-    with_exercises = [p for p in NOTEBOOKS if any("exercise" in tags_of(c) for c in read(p).cells)]
-    if not with_exercises:
-        pytest.fail("no notebook has exercises")
-    copy_path = student_dir / with_exercises[0].name
-    notebook = read(copy_path)
-    client = NotebookClient(
-        notebook,
-        timeout=300,
-        kernel_name="python3",
-        resources={"metadata": {"path": str(student_dir)}},
-    )
-    seen_exercise = False
-    with client.setup_kernel():
-        for index, cell in enumerate(notebook.cells):
-            if cell.cell_type != "code":
-                continue
-            client.execute_cell(cell, index)
-            tags = tags_of(cell)
-            seen_exercise = seen_exercise or "exercise" in tags
-            if seen_exercise and "check" in tags:
-                text = output_text(cell).strip()
-                assert text.startswith("not yet"), f"{copy_path.name}, cell {index}: {text!r}"
-                return
-    pytest.fail(f"{copy_path.name}: no check cell after the first exercise")
+# --- the tooling, on small notebooks built here ------------------------------------------------
 
 
-# --- the tooling itself ------------------------------------------------------------------------
+def run_cli(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str, str]:
+    """``eulerlib ARGS`` in this process: (exit status, standard output, standard error)."""
+    status = cli.main(list(args))
+    captured = capsys.readouterr()
+    return status, captured.out, captured.err
+
+
+def assert_one_line_failure(status: int, err: str, *words: str) -> None:
+    assert status != 0
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    for word in words:
+        assert word in lines[0], lines[0]
 
 
 def tiny_notebook() -> nbformat.NotebookNode:
-    """A small notebook as an editor leaves it: counts out of order, stray metadata."""
+    """A small course notebook as an editor leaves it: counts out of order, stray metadata,
+    one exercise whose worked solution is folded."""
     notebook = nbformat.v4.new_notebook()
     notebook.metadata = {
         "kernelspec": {"display_name": "Some Python", "language": "python", "name": "python3"},
@@ -422,53 +287,56 @@ def tiny_notebook() -> nbformat.NotebookNode:
         "toc": {"number_sections": True},
     }
     title = nbformat.v4.new_markdown_cell("# A tiny notebook")
-    title.metadata = {"editable": False}
-    first = nbformat.v4.new_code_cell("x = 6 * 7\nprint('x is', x)", execution_count=7)
+    title.metadata = {"editable": False, "jupyter": {"source_hidden": False, "other": 1}}
+    first = nbformat.v4.new_code_cell(
+        "import sys\nx = 6 * 7\nprint('x is', end=' ')\nsys.stdout.flush()\nprint(x)",
+        execution_count=7,
+    )
     first.metadata = {"collapsed": True, "execution": {"iopub.status.busy": "2020-01-01"}}
     second = nbformat.v4.new_code_cell("x + 1", execution_count=3)
-    second.metadata = {"tags": ["check"], "scrolled": True}
-    notebook.cells = [title, first, second]
+    second.metadata = {"scrolled": True, "tags": []}
+    exercise = nbformat.v4.new_code_cell("answer = ...", metadata={"tags": ["exercise"]})
+    solution = nbformat.v4.new_code_cell("answer = x")
+    solution.metadata = {
+        "tags": ["solution"],
+        "jupyter": {"source_hidden": True, "outputs_hidden": True},
+        "editable": True,
+    }
+    check = nbformat.v4.new_code_cell(
+        "print('not yet' if answer is ... else 'correct' if answer == 42 else 'off')",
+        metadata={"tags": ["check"], "deletable": False},
+    )
+    notebook.cells = [title, first, second, exercise, solution, check]
     return notebook
 
 
-def test_refresh_command_executes_and_normalizes(tmp_path: Path) -> None:
-    path = tmp_path / "01_tiny.ipynb"
-    nbformat.write(tiny_notebook(), str(path))
-    assert not is_normalized(path)
-    result = run_cli("notebooks", "refresh", str(path), cwd=tmp_path)
-    assert result.returncode == 0, result.stderr
-    assert "refreshed" in result.stdout
-    assert is_normalized(path)
-    notebook = read(path)
-    nbformat.validate(notebook)
-    assert notebook.metadata == {
-        "kernelspec": KERNELSPEC,
-        "language_info": {"name": "python"},
-    }
-    title, first, second = notebook.cells
-    assert title.metadata == {}
-    assert first.metadata == {}
-    assert second.metadata == {"tags": ["check"]}
-    assert [first.execution_count, second.execution_count] == [1, 2]
-    assert output_text(first) == "x is 42\n"
-    assert output_text(second) == "43"
-    assert second.outputs[0]["execution_count"] == 2
-    assert list(tmp_path.iterdir()) == [path]  # nothing else written
+def test_normal_form_keeps_tags_and_folding_only() -> None:
+    normal = normalize_notebook(tiny_notebook())
+    assert normal.metadata == {"kernelspec": KERNELSPEC, "language_info": {"name": "python"}}
+    assert [cell.metadata for cell in normal.cells] == [
+        {"jupyter": {"source_hidden": False}},
+        {},
+        {},
+        {"tags": ["exercise"]},
+        {"tags": ["solution"], "jupyter": {"source_hidden": True, "outputs_hidden": True}},
+        {"tags": ["check"]},
+    ]
+    assert [cell.get("execution_count") for cell in normal.cells] == [None, 1, 2, 3, 4, 5]
+    assert [cell.id for cell in normal.cells] == [f"cell-00{i}" for i in range(6)]
 
 
-def test_refresh_of_a_missing_notebook_fails_in_one_line(tmp_path: Path) -> None:
-    result = run_cli("notebooks", "refresh", str(tmp_path / "absent.ipynb"), cwd=tmp_path)
-    assert result.returncode != 0
-    assert "Traceback" not in result.stderr
-    assert len(result.stderr.strip().splitlines()) == 1
-    assert "absent.ipynb" in result.stderr
-
-
-def test_student_command_without_notebook_folder_fails_in_one_line(tmp_path: Path) -> None:
-    result = run_cli("notebooks", "student", "--out", str(tmp_path / "out"), cwd=tmp_path)
-    assert result.returncode != 0
-    assert "Traceback" not in result.stderr
-    assert len(result.stderr.strip().splitlines()) == 1
+def test_normal_form_joins_split_prints() -> None:
+    notebook = tiny_notebook()
+    notebook.cells[1].outputs = [
+        nbformat.v4.new_output("stream", name="stdout", text="x is "),
+        nbformat.v4.new_output("stream", name="stdout", text="42\n"),
+        nbformat.v4.new_output("stream", name="stderr", text="a warning\n"),
+    ]
+    outputs = normalize_notebook(notebook).cells[1].outputs
+    assert [(o.name, o.text) for o in outputs] == [
+        ("stdout", "x is 42\n"),
+        ("stderr", "a warning\n"),
+    ]
 
 
 def test_normalize_is_idempotent_and_keeps_sources() -> None:
@@ -476,7 +344,10 @@ def test_normalize_is_idempotent_and_keeps_sources() -> None:
     twice = normalize_notebook(once)
     assert once == twice
     assert [c.source for c in once.cells] == [c.source for c in tiny_notebook().cells]
-    assert [c.id for c in once.cells] == ["cell-000", "cell-001", "cell-002"]
+    original = tiny_notebook()
+    unchanged = copy.deepcopy(original)
+    normalize_notebook(original)
+    assert original == unchanged
 
 
 def test_is_normalized_detects_stray_metadata(tmp_path: Path) -> None:
@@ -489,6 +360,117 @@ def test_is_normalized_detects_stray_metadata(tmp_path: Path) -> None:
     assert not is_normalized(path)
 
 
+def test_refresh_command_executes_and_normalizes(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    path = tmp_path / "01_tiny.ipynb"
+    nbformat.write(tiny_notebook(), str(path))
+    assert not is_normalized(path)
+    status, out, err = run_cli(capsys, "notebooks", "refresh", str(path))
+    assert (status, out, err) == (0, f"refreshed {path}\n", "")
+    assert is_normalized(path)
+    notebook = read(path)
+    nbformat.validate(notebook)
+    expected = normalize_notebook(tiny_notebook())
+    assert notebook.metadata == expected.metadata
+    assert [cell.metadata for cell in notebook.cells] == [cell.metadata for cell in expected.cells]
+    _, first, second, _, solution, check = notebook.cells
+    assert [(o.output_type, o.get("name")) for o in first.outputs] == [("stream", "stdout")]
+    assert output_text(first) == "x is 42\n"  # one print, although flushed in two pieces
+    assert output_text(second) == "43"
+    assert second.outputs[0]["execution_count"] == 2
+    assert solution.metadata["jupyter"] == {"source_hidden": True, "outputs_hidden": True}
+    assert output_text(check) == "correct\n"
+    assert list(tmp_path.iterdir()) == [path]  # nothing else written
+
+
+def test_student_command_writes_copies_whose_checks_say_not_yet(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source, out = tmp_path / "course", tmp_path / "student"
+    source.mkdir()
+    nbformat.write(tiny_notebook(), str(source / "01_tiny.ipynb"))
+    nbformat.write(nbformat.v4.new_notebook(), str(source / "02_empty.ipynb"))
+    status, stdout, err = run_cli(
+        capsys, "notebooks", "student", "--src", str(source), "--out", str(out)
+    )
+    assert (status, stdout, err) == (0, f"wrote 2 student copies to {out}\n", "")
+    assert sorted(p.name for p in out.iterdir()) == ["01_tiny.ipynb", "02_empty.ipynb"]
+    copy_path = out / "01_tiny.ipynb"
+    student = read(copy_path)
+    assert [tags_of(cell) for cell in student.cells] == [[], [], [], ["exercise"], ["check"]]
+    # The copy runs top to bottom, and its check finds the answer not given yet.
+    assert run_cli(capsys, "notebooks", "refresh", str(copy_path))[0] == 0
+    assert output_text(read(copy_path).cells[-1]) == "not yet\n"
+
+
+def test_student_command_overwrites_only_with_force(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    source, out = tmp_path / "course", tmp_path / "student"
+    source.mkdir()
+    out.mkdir()
+    for name in ("01_a.ipynb", "02_b.ipynb", "03_c.ipynb"):
+        nbformat.write(tiny_notebook(), str(source / name))
+    for name in ("01_a.ipynb", "03_c.ipynb", "notes.txt"):
+        (out / name).write_text("a learner's work\n")
+    arguments = ("notebooks", "student", "--src", str(source), "--out", str(out))
+    status, stdout, err = run_cli(capsys, *arguments)
+    assert_one_line_failure(status, err, "2 of the 3 student copies already exist", "--force")
+    assert stdout == ""
+    assert sorted(p.name for p in out.iterdir()) == ["01_a.ipynb", "03_c.ipynb", "notes.txt"]
+    assert all(
+        (out / name).read_text() == "a learner's work\n" for name in ("01_a.ipynb", "03_c.ipynb")
+    )
+    status, stdout, _ = run_cli(capsys, *arguments, "--force")
+    assert (status, stdout) == (0, f"wrote 3 student copies to {out}\n")
+    assert (out / "notes.txt").read_text() == "a learner's work\n"
+    assert read(out / "01_a.ipynb") == student_copy(tiny_notebook())
+
+
+def test_student_command_without_notebook_folder_fails_in_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    status, _, err = run_cli(capsys, "notebooks", "student", "--out", "out")
+    assert_one_line_failure(status, err, "no notebooks/ folder here", "repository", "--src")
+    status, _, err = run_cli(capsys, "notebooks", "student", "--src", "missing", "--out", "out")
+    assert_one_line_failure(status, err, "no notebook folder at missing")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_refresh_without_notebook_folder_fails_in_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    status, _, err = run_cli(capsys, "notebooks", "refresh")
+    assert_one_line_failure(status, err, "no notebooks/ folder here", "repository")
+
+
+def test_refresh_of_a_missing_notebook_fails_in_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    status, out, err = run_cli(capsys, "notebooks", "refresh", str(tmp_path / "absent.ipynb"))
+    assert_one_line_failure(status, err, "absent.ipynb")
+    assert out == ""
+
+
+def test_refresh_of_a_failing_notebook_fails_in_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    notebook = nbformat.v4.new_notebook()
+    notebook.cells = [nbformat.v4.new_code_cell("1 / 0")]
+    path = tmp_path / "broken.ipynb"
+    nbformat.write(notebook, str(path))
+    before = path.read_bytes()
+    status, out, err = run_cli(capsys, "notebooks", "refresh", str(path))
+    assert (status, out) == (1, "")
+    assert err.strip().splitlines() == [
+        f"eulerlib notebooks: error: {path}: a cell raised ZeroDivisionError: division by zero"
+    ]
+    assert path.read_bytes() == before  # left as it was
+
+
 def test_student_copy_function_drops_solution_cells() -> None:
     notebook = nbformat.v4.new_notebook()
     cells = [
@@ -497,28 +479,49 @@ def test_student_copy_function_drops_solution_cells() -> None:
         nbformat.v4.new_code_cell("check_number(answer_1, 1)", metadata={"tags": ["check"]}),
     ]
     cells[2].outputs = [nbformat.v4.new_output("stream", text="correct\n")]
+    cells[2].execution_count = 3
     notebook.cells = cells
-    copy = student_copy(notebook)
-    assert [c.source for c in copy.cells] == ["answer_1 = ...", "check_number(answer_1, 1)"]
-    assert all(c.outputs == [] and c.execution_count is None for c in copy.cells)
-    assert len(notebook.cells) == 3  # the original is left alone
+    student = student_copy(notebook)
+    assert [c.source for c in student.cells] == ["answer_1 = ...", "check_number(answer_1, 1)"]
+    assert [c.id for c in student.cells] == ["cell-000", "cell-001"]
+    assert all(c.outputs == [] and c.execution_count is None for c in student.cells)
+    assert len(notebook.cells) == 3 and notebook.cells[2].outputs  # the original is left alone
 
 
-def test_student_copies_refuse_the_course_folder(tmp_path: Path) -> None:
+def test_student_copies_refuse_the_course_folder_and_bad_flags(tmp_path: Path) -> None:
     with pytest.raises(ValueError, match="another folder"):
         write_student_copies(tmp_path, tmp_path)
     with pytest.raises(ValueError, match="no notebook folder"):
         write_student_copies(tmp_path / "missing", tmp_path / "out")
+    with pytest.raises(TypeError, match=r"^force must be True or False"):
+        write_student_copies(tmp_path, tmp_path / "out", force="yes")  # type: ignore[arg-type]
 
 
-def test_refresh_of_a_failing_notebook_fails_in_one_line(tmp_path: Path) -> None:
-    notebook = nbformat.v4.new_notebook()
-    notebook.cells = [nbformat.v4.new_code_cell("1 / 0")]
-    path = tmp_path / "broken.ipynb"
-    nbformat.write(notebook, str(path))
-    result = run_cli("notebooks", "refresh", str(path), cwd=tmp_path)
-    assert result.returncode == 1
-    assert "Traceback" not in result.stderr
-    assert result.stderr.strip().splitlines() == [
-        f"eulerlib notebooks: error: {path}: a cell raised ZeroDivisionError: division by zero"
+# --- without the notebooks extra ----------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("hidden", "action"),
+    [
+        ("nbformat", ("student", "--out", "out")),
+        ("nbclient", ("refresh",)),
+        ("nbconvert", ("student", "--out", "out")),
+    ],
+)
+def test_notebook_commands_name_the_extra_when_it_is_missing(
+    hidden: str,
+    action: tuple[str, ...],
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "notebooks").mkdir()
+    monkeypatch.setitem(sys.modules, hidden, None)  # `import hidden` fails, as when not installed
+    status, out, err = run_cli(capsys, "notebooks", *action)
+    assert (status, out) == (1, "")
+    assert err.splitlines() == [
+        f"eulerlib notebooks: error: eulerlib notebooks {action[0]} needs {hidden} "
+        '(the notebooks extra): pip install "eulerlib[notebooks]"'
     ]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["notebooks"]

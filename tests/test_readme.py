@@ -1,11 +1,17 @@
-"""The README keeps its promises: its example runs as shown, and CI runs its test command."""
+"""The README keeps its promises: its example runs as shown, CI runs its test command, and the
+commands it shows are commands the CLI takes."""
 
 from __future__ import annotations
 
 import contextlib
 import io
 import re
+import shlex
 from pathlib import Path
+
+import pytest
+
+from eulerlib import cli
 
 ROOT = Path(__file__).resolve().parents[1]
 README = (ROOT / "README.md").read_text(encoding="utf-8")
@@ -35,3 +41,15 @@ def test_readme_opens_the_course_in_jupyterlab() -> None:
     assert any(
         c.startswith("python3 -m venv .venv") and "jupyter lab notebooks/" in c for c in commands
     )
+
+
+def test_readme_command_lines_are_commands_the_cli_takes() -> None:
+    commands = [line for block in _blocks("bash") for line in block.splitlines()]
+    shown = [c.split("#")[0] for c in commands if c.startswith(".venv/bin/eulerlib ")]
+    assert {shlex.split(c)[1] for c in shown} == set(cli.SUBCOMMANDS)
+    parser = cli.build_parser()
+    for command in shown:
+        try:
+            parser.parse_args(shlex.split(command)[1:])
+        except SystemExit:
+            pytest.fail(f"README shows a command the CLI does not take: {command.strip()}")

@@ -38,8 +38,10 @@ Every function checks all of its arguments before it creates a figure or draws a
 the same rules as the rest of eulerlib (:mod:`eulerlib.plotting._checks`): a bad argument
 raises a ``TypeError`` or ``ValueError`` that names it and leaves no figure open in pyplot.
 
-matplotlib is imported inside the functions, so ``import eulerlib`` stays light; this package
-is not imported by ``eulerlib/__init__.py``.
+matplotlib comes with the ``plot`` extra (``pip install "eulerlib[plot]"``): importing this
+package without it fails with an ``ImportError`` that says so. pyplot is imported inside the
+functions that draw, and this package is not imported by ``eulerlib/__init__.py``, so
+``import eulerlib`` stays light.
 
 Examples
 --------
@@ -54,6 +56,13 @@ Examples
 1
 >>> plt.close(fig)
 """
+
+from eulerlib._extras import MissingExtraError
+
+try:
+    import matplotlib  # noqa: F401  (the functions import pyplot when they draw)
+except ImportError as error:
+    raise MissingExtraError("eulerlib.plotting", "matplotlib", "plot") from error
 
 from eulerlib.plotting._base import AXIS_COLORS, HIGHLIGHT_COLOR, RING_COLORS, RING_RADII
 from eulerlib.plotting.aircraft import aircraft_segments, draw_aircraft, plot_body_rotation

@@ -59,7 +59,9 @@ preset by :func:`eulerlib.get_convention`. A bad argument raises a ``TypeError``
 ``ValueError`` that names it.
 
 This package imports SymPy, so :mod:`eulerlib` does not import it; use
-``from eulerlib import symbolic`` or ``import eulerlib.symbolic``.
+``from eulerlib import symbolic`` or ``import eulerlib.symbolic``. SymPy comes with the
+``symbolic`` extra (``pip install "eulerlib[symbolic]"``); without it the import fails with an
+``ImportError`` that says so.
 
 Examples
 --------
@@ -70,6 +72,13 @@ Examples
 >>> R[:, 0].T    # where the body's x axis (the nose) points
 Matrix([[cos(v)*cos(w), sin(w)*cos(v), -sin(v)]])
 """
+
+from eulerlib._extras import MissingExtraError
+
+try:
+    import sympy  # noqa: F401  (the modules of this package import it)
+except ImportError as error:
+    raise MissingExtraError("eulerlib.symbolic", "sympy", "symbolic") from error
 
 from eulerlib.symbolic.angular_velocity import (
     angular_velocity_from_matrix,

@@ -1,0 +1,15 @@
+"""Course tooling: what keeps the notebooks a reliable record, and what a teacher hands out.
+
+The library (:mod:`eulerlib`) computes; this package looks after the course built on it:
+
+* :mod:`~eulerlib.course.notebook_form`: the normal form in which notebooks are stored (so that
+  strict nbval compares exactly what a fresh run writes), and refreshing a notebook into it;
+* :mod:`~eulerlib.course.student`: student copies, without the worked solutions and outputs;
+* :mod:`~eulerlib.course.figures`: every figure of the course, drawn from the library;
+* :mod:`~eulerlib.course.commands`: the command-line glue, ``eulerlib notebooks student``,
+  ``eulerlib notebooks refresh`` and ``eulerlib figures``.
+
+The modules need the ``notebooks`` extra (``pip install "eulerlib[notebooks]"``: nbformat,
+nbclient, nbconvert, and matplotlib for the figures). Importing this package itself loads none
+of them.
+"""

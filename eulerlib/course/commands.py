@@ -1,0 +1,131 @@
+"""The course's commands: ``eulerlib notebooks student|refresh`` and ``eulerlib figures``.
+
+* ``eulerlib notebooks student --out DIR [--src DIR] [--force]`` (for teachers) writes a
+  student copy of every course notebook into ``DIR`` (:mod:`eulerlib.course.student`). It does
+  not overwrite existing copies unless ``--force`` is given.
+* ``eulerlib notebooks refresh [NOTEBOOK ...]`` (for maintainers) re-executes notebooks and
+  stores them in normal form (:mod:`eulerlib.course.notebook_form`); all of ``notebooks/`` by
+  default.
+* ``eulerlib figures [--out DIR]`` (for maintainers) redraws every figure of the course
+  (:mod:`eulerlib.course.figures`) into ``figures/`` by default.
+
+The course itself (``notebooks/``, ``figures/``) lives in the repository, not in the installed
+package: without ``--src`` or ``--out`` the commands work on those folders of the current
+directory, and say so when they are not there. The notebook tools (nbformat, nbclient,
+nbconvert) and matplotlib are imported only when a command runs; when they are missing, the
+command ends with one line naming the extra to install. Like every subcommand of
+:mod:`eulerlib.cli`, these end with one line on standard error and a non-zero exit status when
+something is wrong, never with a traceback.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from eulerlib._extras import require
+
+__all__ = ["configure_figures", "configure_notebooks", "run_figures", "run_notebooks"]
+
+#: The course's folders, relative to the top folder of the repository.
+NOTEBOOK_FOLDER = Path("notebooks")
+FIGURE_FOLDER = Path("figures")
+#: The packages of the ``notebooks`` extra that ``eulerlib notebooks`` imports.
+NOTEBOOK_TOOLS = ("nbformat", "nbclient", "nbconvert")
+
+
+def configure_notebooks(parser: argparse.ArgumentParser) -> None:
+    """Add the ``student`` and ``refresh`` actions to the ``notebooks`` sub-parser."""
+    actions = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
+    student = actions.add_parser(
+        "student",
+        help="write student copies: worked solutions and outputs removed",
+        description="Write a student copy of every course notebook, without the worked "
+        "solutions and outputs.",
+    )
+    student.add_argument("--out", type=Path, required=True, help="folder for the student copies")
+    student.add_argument(
+        "--src", type=Path, help="folder of the course notebooks (default: notebooks/)"
+    )
+    student.add_argument(
+        "--force", action="store_true", help="overwrite student copies already in --out"
+    )
+    refresh = actions.add_parser(
+        "refresh",
+        help="re-execute notebooks in place and store them in normal form",
+        description="Re-execute notebooks in place and store them in normal form (the stored "
+        "outputs that CI compares).",
+    )
+    refresh.add_argument(
+        "notebooks", nargs="*", type=Path, help="notebooks to refresh (default: notebooks/*.ipynb)"
+    )
+    parser.set_defaults(run=run_notebooks)
+
+
+def configure_figures(parser: argparse.ArgumentParser) -> None:
+    """Add ``--out`` to the ``figures`` sub-parser."""
+    parser.add_argument("--out", type=Path, help="folder for the figures (default: figures/)")
+    parser.set_defaults(run=run_figures)
+
+
+def _course_folder(folder: Path, instead: str) -> Path:
+    """``folder`` of the current directory, or a one-line error saying what to do instead."""
+    if not folder.is_dir():
+        raise ValueError(
+            f"no {folder}/ folder here: run from the top folder of the repository "
+            f"(the course is not part of the installed package), or {instead}"
+        )
+    return folder
+
+
+def run_notebooks(args: argparse.Namespace) -> int:
+    """Carry out ``eulerlib notebooks student|refresh``."""
+    require(NOTEBOOK_TOOLS, extra="notebooks", needed_by=f"eulerlib notebooks {args.action}")
+    if args.action == "refresh":
+        return _refresh(args.notebooks)
+    return _student(args.src, args.out, force=args.force)
+
+
+def _student(src: Path | None, out: Path, *, force: bool) -> int:
+    from eulerlib.course.student import write_student_copies
+
+    source = src if src is not None else _course_folder(NOTEBOOK_FOLDER, "pass --src DIR")
+    try:
+        written = write_student_copies(source, out, force=force)
+    except FileExistsError as error:
+        raise ValueError(f"{error}; pass --force to overwrite them") from None
+    print(f"wrote {len(written)} student copies to {out}")
+    return 0
+
+
+def _refresh(paths: list[Path]) -> int:
+    from nbclient.exceptions import CellExecutionError
+
+    from eulerlib.course.notebook_form import refresh_notebook
+
+    if not paths:
+        folder = _course_folder(NOTEBOOK_FOLDER, "name the notebooks to refresh")
+        paths = sorted(folder.glob("*.ipynb"))
+        if not paths:
+            raise ValueError(f"no notebooks in {folder}/")
+    missing = [path for path in paths if not path.is_file()]
+    if missing:
+        raise ValueError(f"no notebook at {missing[0]}")
+    for path in paths:
+        try:
+            refresh_notebook(path)
+        except CellExecutionError as error:  # one line, not the kernel's traceback
+            raise ValueError(f"{path}: a cell raised {error.ename}: {error.evalue}") from None
+        print(f"refreshed {path}")
+    return 0
+
+
+def run_figures(args: argparse.Namespace) -> int:
+    """Carry out ``eulerlib figures``."""
+    require(("matplotlib",), extra="plot", needed_by="eulerlib figures")
+    from eulerlib.course.figures import write_figures
+
+    out = args.out if args.out is not None else _course_folder(FIGURE_FOLDER, "pass --out DIR")
+    written = write_figures(out)
+    print(f"wrote {len(written)} figures to {out}")
+    return 0
