@@ -10,28 +10,24 @@ here.
 
 from __future__ import annotations
 
-import ast
 import copy
 import re
 import sys
-from dataclasses import dataclass
 from pathlib import Path
 
 import nbformat
 import pytest
 
-import eulerlib.checks
 from eulerlib import cli
 from eulerlib.course.notebook_form import KERNELSPEC, is_normalized, normalize_notebook
 from eulerlib.course.student import student_copy, write_student_copies
 
 REPO = Path(__file__).resolve().parents[1]
 NOTEBOOK_DIR = REPO / "notebooks"
-NOTEBOOKS = sorted(NOTEBOOK_DIR.glob("*.ipynb"))
+NOTEBOOKS = sorted(NOTEBOOK_DIR.glob("[0-9][0-9]_*.ipynb"))
+GLOSSARY = NOTEBOOK_DIR / "glossary.ipynb"
 IDS = [path.name for path in NOTEBOOKS]
 
-EXERCISE_TAGS = ("exercise", "solution", "check")
-CHECKERS = frozenset(eulerlib.checks.__all__) - {"CheckResult"}
 #: The folding state of JupyterLab that the normal form keeps, besides the tags.
 FOLDING = {"source_hidden", "outputs_hidden"}
 
@@ -60,66 +56,6 @@ def output_text(cell: nbformat.NotebookNode) -> str:
         elif output.get("output_type") == "error":
             parts.append(f"{output.get('ename')}: {output.get('evalue')}")
     return "".join(parts)
-
-
-def called_names(source: str) -> set[str]:
-    """Names of the functions called in a cell (``f(...)`` and ``module.f(...)``)."""
-    names = set()
-    for node in ast.walk(ast.parse(source)):
-        if isinstance(node, ast.Call):
-            if isinstance(node.func, ast.Name):
-                names.add(node.func.id)
-            elif isinstance(node.func, ast.Attribute):
-                names.add(node.func.attr)
-    return names
-
-
-def assigned_names(source: str, *, only_ellipsis: bool = False) -> set[str]:
-    """Names bound by plain assignments in a cell; optionally only those bound to ``...``."""
-    names = set()
-    for node in ast.walk(ast.parse(source)):
-        if isinstance(node, (ast.Assign, ast.AnnAssign)):
-            value = node.value
-            if only_ellipsis and not (isinstance(value, ast.Constant) and value.value is Ellipsis):
-                continue
-            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
-            for target in targets:
-                for sub in ast.walk(target):
-                    if isinstance(sub, ast.Name):
-                        names.add(sub.id)
-    return names
-
-
-@dataclass
-class Exercise:
-    exercise: nbformat.NotebookNode
-    solution: nbformat.NotebookNode | None
-    check: nbformat.NotebookNode | None
-
-
-def exercises_of(notebook: nbformat.NotebookNode) -> list[Exercise]:
-    """Group the tagged cells: each ``exercise`` cell opens an exercise, which must then get
-    one ``solution`` and one ``check`` cell, in that order, before the next exercise opens."""
-    groups: list[Exercise] = []
-    for index, cell in enumerate(notebook.cells):
-        tags = [t for t in tags_of(cell) if t in EXERCISE_TAGS]
-        assert len(tags) <= 1, f"cell {index} has more than one exercise tag: {tags}"
-        if not tags:
-            continue
-        assert cell.cell_type == "code", f"cell {index} is tagged {tags[0]} but is not code"
-        if tags[0] == "exercise":
-            groups.append(Exercise(cell, None, None))
-            continue
-        assert groups, f"cell {index} is tagged {tags[0]} before any exercise cell"
-        current = groups[-1]
-        if tags[0] == "solution":
-            assert current.solution is None, f"cell {index}: a second solution for one exercise"
-            assert current.check is None, f"cell {index}: the solution comes after its check"
-            current.solution = cell
-        else:
-            assert current.check is None, f"cell {index}: a second check for one exercise"
-            current.check = cell
-    return groups
 
 
 # --- stored form -------------------------------------------------------------------------------
@@ -203,6 +139,18 @@ def test_learning_objectives_near_the_top(path: Path) -> None:
 
 
 @notebook_params
+def test_prerequisites_next_to_the_objectives(path: Path) -> None:
+    head = " ".join(cell.source for cell in read(path).cells[:5] if cell.cell_type == "markdown")
+    assert "prerequisite" in head.lower(), f"{path.name}: no prerequisites in its first cells"
+
+
+def test_the_glossary_is_in_normal_form_and_only_words() -> None:
+    assert is_normalized(GLOSSARY)
+    assert all(cell.cell_type == "markdown" for cell in read(GLOSSARY).cells)
+    assert sorted(NOTEBOOK_DIR.glob("*.ipynb")) == sorted([*NOTEBOOKS, GLOSSARY])
+
+
+@notebook_params
 def test_summary(path: Path) -> None:
     notebook = read(path)
     headings = [
@@ -213,32 +161,6 @@ def test_summary(path: Path) -> None:
         if line.lstrip().startswith("#")
     ]
     assert any("summary" in line.lower() for line in headings), f"{path.name}: no summary"
-
-
-@notebook_params
-def test_two_to_four_exercises_each_with_solution_and_check(path: Path) -> None:
-    exercises = exercises_of(read(path))
-    assert 2 <= len(exercises) <= 4, f"{path.name}: {len(exercises)} exercises, expected 2 to 4"
-    for number, item in enumerate(exercises, start=1):
-        assert item.solution is not None, f"{path.name}: exercise {number} has no solution cell"
-        assert item.check is not None, f"{path.name}: exercise {number} has no check cell"
-        placeholders = assigned_names(item.exercise.source, only_ellipsis=True)
-        assert placeholders, f"{path.name}: exercise {number} does not leave `...` to fill in"
-        missing = placeholders - assigned_names(item.solution.source)
-        assert not missing, f"{path.name}: solution {number} does not define {sorted(missing)}"
-        used = called_names(item.check.source) & CHECKERS
-        assert used, f"{path.name}: check {number} calls no function of eulerlib.checks"
-
-
-@notebook_params
-def test_stored_checks_report_correct(path: Path) -> None:
-    for number, item in enumerate(exercises_of(read(path)), start=1):
-        if item.check is None:
-            continue  # reported by the structure test
-        text = output_text(item.check).strip()
-        assert text.startswith("correct"), (
-            f"{path.name}: check {number} shows {text[:120]!r}, expected 'correct…'"
-        )
 
 
 # --- student copies of the course notebooks ---------------------------------------------------

@@ -4,12 +4,20 @@ The library (:mod:`eulerlib`) computes; this package looks after the course buil
 
 * :mod:`~eulerlib.course.notebook_form`: the normal form in which notebooks are stored (so that
   strict nbval compares exactly what a fresh run writes), and refreshing a notebook into it;
+* :mod:`~eulerlib.course.exercises`: the answer key of the course and the ``check`` and
+  ``given`` that the exercise cells call (numpy only; SymPy when an answer is an expression);
 * :mod:`~eulerlib.course.student`: student copies, without the worked solutions and outputs;
 * :mod:`~eulerlib.course.figures`: every figure of the course, drawn from the library;
 * :mod:`~eulerlib.course.commands`: the command-line glue, ``eulerlib notebooks student``,
   ``eulerlib notebooks refresh`` and ``eulerlib figures``.
 
-The modules need the ``notebooks`` extra (``pip install "eulerlib[notebooks]"``: nbformat,
-nbclient, nbconvert, and matplotlib for the figures). Importing this package itself loads none
-of them.
+The tooling modules need the ``notebooks`` extra (``pip install "eulerlib[notebooks]"``:
+nbformat, nbclient, nbconvert, and matplotlib for the figures). Importing this package loads
+none of them; it offers the two names a notebook's exercises use:
+
+>>> from eulerlib.course import check, given
 """
+
+from eulerlib.course.exercises import check, given
+
+__all__ = ["check", "given"]

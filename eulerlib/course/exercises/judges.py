@@ -1,0 +1,484 @@
+"""Judges: how an answer is compared with the reference, and how a wrong answer is diagnosed.
+
+Each exercise of the course has one judge, built in the answer key with the reference and the
+tolerance. A judge accepts every answer that is *equally right*, not only the one the key
+holds, and names the *likely mistake* when an answer is wrong, without giving the reference
+away:
+
+* angles are judged by the rotation they give, so angles equal modulo a turn, the other branch
+  of eq 3 and the free outer angle at gimbal lock all pass, unless the question states a
+  constraint (yaw = 0, a range), which is then enforced and named;
+* quaternions ``q`` and ``−q`` are the same rotation;
+* SymPy answers are simplified before they are judged, and checked numerically at random
+  values when simplification cannot decide;
+* the typical mistakes are recognised: degrees for radians, the transpose (the inverse), the
+  reversed order (``AB`` for ``BA``, intrinsic for extrinsic), ``atan`` for ``atan2`` (an angle off
+  by 180°), a sign error in one angle, scalar-first for scalar-last, the conjugate;
+* an exercise can add its own typical mistakes (:class:`Mistake`), each with its diagnosis.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from eulerlib._validation import check_tolerance
+
+from .feedback import Verdict, correct, off
+from .reading import read_expression, read_numbers
+
+
+@dataclass(frozen=True)
+class Mistake:
+    """A typical wrong answer of one exercise and what it tells about the learner's reasoning.
+
+    ``value`` is what the mistake produces, of the same kind as the reference (a number, an
+    array, three angles, a SymPy expression); ``message`` says which idea went wrong.
+    """
+
+    value: Any
+    message: str
+
+
+@dataclass(frozen=True)
+class Constraint:
+    """A condition the question states for an answer that is otherwise right (yaw = 0, a range).
+
+    ``holds(answer)`` gets the answer as read (a float array); ``message`` names what the
+    question asked, and is shown when the condition fails.
+    """
+
+    holds: Callable[[NDArray[np.float64]], bool]
+    message: str
+
+
+def _close(a: NDArray[np.float64], b: NDArray[np.float64], tol: float) -> bool:
+    return bool(a.shape == b.shape and np.max(np.abs(a - b), initial=0.0) <= tol)
+
+
+def _entries_that_differ(diff: NDArray[np.float64], tol: float) -> str:
+    bad = [tuple(int(i) for i in index) for index in np.argwhere(np.abs(diff) > tol)]
+    shown = ", ".join(str(index) for index in bad[:3])
+    more = f" and {len(bad) - 3} more" if len(bad) > 3 else ""
+    return f"entr{'y' if len(bad) == 1 else 'ies'} {shown}{more}"
+
+
+class Judge:
+    """Base of the judges: ``judge(answer) -> Verdict``; ``kind`` names the kind of answer."""
+
+    kind = "answer"
+
+    def judge(self, answer: object) -> Verdict:  # pragma: no cover - every judge overrides
+        raise NotImplementedError
+
+
+# --- numbers ------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class NumberJudge(Judge):
+    """A single number; with ``unit`` it is an angle and degrees/radians mix-ups are named.
+
+    ``modulo`` (for angles: 360 or 2π) accepts answers equal up to whole turns.
+    """
+
+    reference: float
+    what: str = "your number"
+    tol: float = 1e-9
+    unit: str | None = None  # "deg" or "rad"
+    modulo: float | None = None
+    mistakes: Sequence[Mistake] = ()
+    kind = "number"
+
+    def __post_init__(self) -> None:
+        check_tolerance(self.tol, "tol")
+        if self.unit not in (None, "deg", "rad"):
+            raise ValueError(f"unit must be None, 'deg' or 'rad', got {self.unit!r}")
+
+    def _distance(self, value: float, target: float) -> float:
+        if self.modulo is None:
+            return abs(value - target)
+        m = self.modulo
+        return abs((value - target + m / 2) % m - m / 2)
+
+    def judge(self, answer: object) -> Verdict:
+        value = float(read_numbers(answer, (), self.what))
+        if self._distance(value, self.reference) <= self.tol:
+            return correct(f"{self.what} is right ({value:.10g})")
+        for mistake in self.mistakes:
+            if self._distance(value, float(mistake.value)) <= self.tol:
+                return off(mistake.message)
+        if self.unit is not None:
+            # the same angle in the other unit, and the tolerance and turn in that unit
+            to_other = math.pi / 180 if self.unit == "deg" else 180 / math.pi
+            other = self.reference * to_other
+            tol = self.tol * to_other
+            gap = abs(value - other)
+            if self.modulo is not None:
+                turn = self.modulo * to_other
+                gap = abs((value - other + turn / 2) % turn - turn / 2)
+            if gap <= tol:
+                said, asked = (
+                    ("radians", "degrees") if self.unit == "deg" else ("degrees", "radians")
+                )
+                return off(f"{self.what} looks like {said}; the question asks for {asked}")
+        if self.reference != 0 and self._distance(-value, self.reference) <= self.tol:
+            return off(f"{self.what} has the right size but the wrong sign")
+        side = "large" if value > self.reference else "small"
+        return off(f"{self.what} ({value:.6g}) is not it: it is too {side}")
+
+
+# --- arrays: vectors and matrices ---------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ArrayJudge(Judge):
+    """A vector or a matrix, compared entry by entry.
+
+    For a rotation matrix (``rotation=True``) a wrong answer is also checked for being the
+    transpose (the inverse rotation), a reflection, or not orthogonal at all.
+    """
+
+    reference: ArrayLike
+    what: str = "your answer"
+    tol: float = 1e-9
+    rotation: bool = False
+    mistakes: Sequence[Mistake] = ()
+    kind = "array"
+
+    def __post_init__(self) -> None:
+        check_tolerance(self.tol, "tol")
+
+    @property
+    def _reference(self) -> NDArray[np.float64]:
+        return np.asarray(self.reference, dtype=np.float64)
+
+    def judge(self, answer: object) -> Verdict:
+        ref = self._reference
+        value = read_numbers(answer, ref.shape, self.what)
+        if _close(value, ref, self.tol):
+            return correct(f"{self.what} is right")
+        for mistake in self.mistakes:
+            if _close(value, np.asarray(mistake.value, dtype=np.float64), self.tol):
+                return off(mistake.message)
+        if ref.ndim == 2 and ref.shape[0] == ref.shape[1] and _close(value.T, ref, self.tol):
+            return off(
+                f"{self.what} is the transpose of the answer, that is the inverse rotation: "
+                "check the order of the product, or active versus passive"
+            )
+        if ref.ndim == 1 and _close(-value, ref, self.tol):
+            return off(f"{self.what} points the opposite way: a sign is off")
+        if ref.ndim == 1 and not math.isclose(
+            float(np.linalg.norm(value)), float(np.linalg.norm(ref)), rel_tol=1e-6, abs_tol=self.tol
+        ):
+            return off(
+                f"{self.what} has length {np.linalg.norm(value):.6g}, but the answer has length "
+                f"{np.linalg.norm(ref):.6g}: a rotation never changes a length"
+            )
+        if self.rotation and ref.shape == (3, 3):
+            det = float(np.linalg.det(value))
+            if det < 0:
+                return off(
+                    f"{self.what} has determinant {det:.3g}: a reflection, not a rotation (a sign "
+                    "or two columns are swapped)"
+                )
+            gram = float(np.max(np.abs(value @ value.T - np.eye(3))))
+            if gram > 1e-6:
+                return off(
+                    f"{self.what} is not a rotation: its columns are not orthonormal "
+                    f"(max |R Rᵀ − I| = {gram:.3g}); check each entry"
+                )
+        return off(f"{self.what} is not it: {_entries_that_differ(value - ref, self.tol)} differ")
+
+
+# --- angles --------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class AnglesJudge(Judge):
+    """Three Euler angles, judged by the rotation they give.
+
+    Any triple that gives the reference rotation is right (angles modulo a turn, the other
+    branch of eq 3, any split of the free outer angle at lock) unless a :class:`Constraint` of the
+    question fails. Wrong answers are checked for the typical mistakes, in this order: the other
+    unit, the reversed order, the intrinsic/extrinsic swap, one angle with the wrong sign, one
+    angle off by 180° (``atan`` for ``atan2``), then the exercise's own :class:`Mistake` list.
+    """
+
+    reference: ArrayLike
+    seq: str
+    degrees: bool = True
+    what: str = "your angles"
+    tol: float = 1e-9
+    constraints: Sequence[Constraint] = ()
+    mistakes: Sequence[Mistake] = ()
+    kind = "angles"
+
+    def __post_init__(self) -> None:
+        check_tolerance(self.tol, "tol")
+
+    def _matrix(
+        self, angles: ArrayLike, seq: str | None = None, degrees: bool | None = None
+    ) -> Any:
+        from eulerlib import euler_to_matrix
+
+        return euler_to_matrix(
+            angles,
+            self.seq if seq is None else seq,
+            degrees=self.degrees if degrees is None else degrees,
+        )
+
+    def judge(self, answer: object) -> Verdict:
+        from eulerlib import get_convention
+
+        convention = get_convention(self.seq)
+        names, seq = convention.angle_names, convention.seq
+        value = read_numbers(answer, (3,), self.what)
+        target = self._matrix(self.reference)
+        if _close(self._matrix(value), target, self.tol):
+            for constraint in self.constraints:
+                if not constraint.holds(value):
+                    return off(f"these angles give the right rotation, but {constraint.message}")
+            return correct("these angles give the rotation asked for")
+        half = 180.0 if self.degrees else math.pi
+        # (angles, sequence, in degrees, what it means if they give the target rotation)
+        candidates: list[tuple[NDArray[np.float64], str, bool, str]] = [
+            (np.asarray(m.value, dtype=np.float64), seq, self.degrees, m.message)
+            for m in self.mistakes
+        ]
+        said, asked = ("radians", "degrees") if self.degrees else ("degrees", "radians")
+        candidates.append(
+            (value, seq, not self.degrees, f"these look like {said}; the question asks for {asked}")
+        )
+        candidates.append(
+            (
+                value[::-1],
+                seq,
+                self.degrees,
+                f"the angles are in reverse order: angle i goes with letter i of {seq!r} "
+                f"({', '.join(names)})",
+            )
+        )
+        fixed_for_moving = (
+            "fixed axes (extrinsic) instead of moving axes (intrinsic)"
+            if seq.isupper()
+            else "moving axes (intrinsic) instead of fixed axes (extrinsic)"
+        )
+        candidates.append(
+            (
+                value,
+                seq.swapcase(),
+                self.degrees,
+                f"these are the angles of {seq.swapcase()!r}: {fixed_for_moving}",
+            )
+        )
+        for i, name in enumerate(names):
+            flipped = value.copy()
+            flipped[i] = -flipped[i]
+            candidates.append((flipped, seq, self.degrees, f"{name} has the wrong sign"))
+        for i, name in enumerate(names):
+            turned = value.copy()
+            turned[i] += half
+            candidates.append(
+                (
+                    turned,
+                    seq,
+                    self.degrees,
+                    f"{name} is off by {'180°' if self.degrees else 'π'}: atan(y/x) cannot tell "
+                    "(x, y) from (−x, −y); use atan2(y, x), which keeps the quadrant",
+                )
+            )
+        for angles, candidate_seq, degrees, message in candidates:
+            if _close(self._matrix(angles, seq=candidate_seq, degrees=degrees), target, self.tol):
+                return off(message)
+        got = self._matrix(value)
+        cosine = float(np.clip(got[:, 0] @ target[:, 0], -1.0, 1.0))
+        return off(
+            "these angles give another rotation: with them the body's x axis points "
+            f"{math.degrees(math.acos(cosine)):.3g}° away from where it should"
+        )
+
+
+# --- quaternions ----------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class QuaternionJudge(Judge):
+    """A unit quaternion; ``q`` and ``−q`` are the same rotation and both are right.
+
+    ``reference`` is written in the layout the question asks for (``scalar_first`` or not).
+    Wrong answers are checked for the other layout, the conjugate (the inverse rotation), and a
+    missing normalization.
+    """
+
+    reference: ArrayLike
+    scalar_first: bool = False
+    what: str = "your quaternion"
+    tol: float = 1e-9
+    mistakes: Sequence[Mistake] = ()
+    kind = "quaternion"
+
+    def __post_init__(self) -> None:
+        check_tolerance(self.tol, "tol")
+
+    def _same(self, q: NDArray[np.float64], r: NDArray[np.float64]) -> bool:
+        return _close(q, r, self.tol) or _close(-q, r, self.tol)
+
+    def judge(self, answer: object) -> Verdict:
+        ref = np.asarray(self.reference, dtype=np.float64)
+        value = read_numbers(answer, (4,), self.what)
+        if _close(value, ref, self.tol):
+            return correct(f"{self.what} is right")
+        if _close(-value, ref, self.tol):
+            return correct(
+                f"{self.what} is −q of the reference, which is the same rotation (the double cover)"
+            )
+        for mistake in self.mistakes:
+            if self._same(value, np.asarray(mistake.value, dtype=np.float64)):
+                return off(mistake.message)
+        norm = float(np.linalg.norm(value))
+        if (
+            norm > 0
+            and not math.isclose(norm, 1.0, abs_tol=self.tol)
+            and self._same(value / norm, ref)
+        ):
+            return off(
+                f"{self.what} points the right way but has length {norm:.6g}; divide it by "
+                "its norm to make it a unit quaternion"
+            )
+        moved = np.roll(value, 1 if self.scalar_first else -1)
+        if self._same(moved, ref):
+            layout = (
+                "scalar-first (w, x, y, z)" if self.scalar_first else "scalar-last (x, y, z, w)"
+            )
+            return off(f"the components are in the wrong order: the question asks for {layout}")
+        scalar = 0 if self.scalar_first else 3
+        conjugate = -value
+        conjugate[scalar] = value[scalar]
+        if self._same(conjugate, ref):
+            return off(f"{self.what} is the conjugate of the answer, which is the inverse rotation")
+        if norm == 0:
+            return off(f"{self.what} is zero, which is no rotation at all")
+        dot = abs(float(value @ ref)) / norm
+        angle = 2 * math.degrees(math.acos(min(1.0, dot)))
+        return off(f"{self.what} is another rotation, {angle:.3g}° away from the one asked for")
+
+
+# --- SymPy expressions and matrices --------------------------------------------------------------
+
+
+def _numerically_zero(expression: Any, seed: int = 7) -> bool:
+    """True when ``expression`` (a SymPy expression or matrix) vanishes at random real values."""
+    import sympy as sp
+
+    symbols = sorted(expression.free_symbols, key=str)
+    rng = np.random.default_rng(seed)
+    for _ in range(5):
+        values = {s: sp.Float(rng.uniform(-3.0, 3.0)) for s in symbols}
+        numeric = expression.subs(values).evalf()
+        try:
+            entries = numeric if isinstance(numeric, sp.MatrixBase) else [numeric]
+            if any(abs(complex(entry)) > 1e-9 for entry in entries):
+                return False
+        except TypeError:
+            return False
+    return True
+
+
+def _vanishes(expression: Any) -> bool:
+    import sympy as sp
+
+    simplified = sp.simplify(expression)
+    if isinstance(simplified, sp.MatrixBase):
+        if simplified.is_zero_matrix:
+            return True
+    elif simplified == 0:
+        return True
+    return _numerically_zero(simplified)
+
+
+@dataclass(frozen=True)
+class ExpressionJudge(Judge):
+    """A SymPy expression or matrix, simplified before it is judged.
+
+    A wrong matrix is answered with the one entry that differs (the learner's entry, never the
+    reference's). ``up_to_sign`` accepts the answer with either sign (for a combination of angles
+    whose sign convention the question leaves open).
+    """
+
+    reference: Any
+    what: str = "your expression"
+    up_to_sign: bool = False
+    mistakes: Sequence[Mistake] = ()
+    kind = "expression"
+
+    def judge(self, answer: object) -> Verdict:
+        import sympy as sp
+
+        ref = sp.sympify(self.reference)
+        value = read_expression(answer, self.what)
+        is_matrix = isinstance(ref, sp.MatrixBase)
+        if is_matrix != isinstance(value, sp.MatrixBase) or (
+            is_matrix and value.shape != ref.shape
+        ):
+            wanted = f"a {ref.shape[0]}×{ref.shape[1]} matrix" if is_matrix else "an expression"
+            return off(f"{self.what} is not {wanted}")
+        if _vanishes(value - ref):
+            return correct(f"{self.what} equals the answer (after simplification)")
+        if self.up_to_sign and _vanishes(value + ref):
+            return correct(f"{self.what} is right (with the other sign, which is as good here)")
+        for mistake in self.mistakes:
+            if _vanishes(value - sp.sympify(mistake.value)):
+                return off(mistake.message)
+        if _vanishes(value + ref):
+            return off(f"{self.what} differs from the answer by its sign")
+        if is_matrix:
+            if _vanishes(value.T - ref):
+                return off(
+                    f"{self.what} is the transpose of the answer: check the order of the "
+                    "product, or active versus passive"
+                )
+            for row in range(ref.shape[0]):
+                for col in range(ref.shape[1]):
+                    if not _vanishes(value[row, col] - ref[row, col]):
+                        return off(
+                            f"entry ({row}, {col}) of {self.what} is not right: yours is "
+                            f"{sp.simplify(value[row, col])}"
+                        )
+        return off(f"{self.what} simplifies to {sp.simplify(value)}, which is not the answer")
+
+
+# --- choices -------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ChoiceJudge(Judge):
+    """One option among several (at least three), each wrong option with its own explanation."""
+
+    options: Mapping[str, str]
+    answer: str
+    explanations: Mapping[str, str] = field(default_factory=dict)
+    kind = "choice"
+
+    def __post_init__(self) -> None:
+        if len(self.options) < 3:
+            raise ValueError("a choice needs at least three options, so that a guess rarely passes")
+        if self.answer not in self.options:
+            raise ValueError(f"the answer {self.answer!r} is not one of the options")
+        missing = set(self.options) - {self.answer} - set(self.explanations)
+        if missing:
+            raise ValueError(f"every wrong option needs an explanation; missing {sorted(missing)}")
+
+    def judge(self, answer: object) -> Verdict:
+        labels = ", ".join(repr(label) for label in self.options)
+        if not isinstance(answer, str) or answer.strip().lower() not in self.options:
+            return off(f"give one of the options {labels} (as text, in quotes)")
+        label = answer.strip().lower()
+        if label == self.answer:
+            return correct(self.explanations.get(label, "that is the one"))
+        return off(self.explanations[label])

@@ -1,0 +1,154 @@
+"""The answer key: every exercise of the course, with its reference, its judge and its test table.
+
+Each notebook ``NN`` has a module ``nbNN`` here whose ``EXERCISES`` list holds its exercises,
+``"NN.1"``, ``"NN.2"``, … in order. An :class:`Exercise` keeps together what a teacher needs to
+trust it:
+
+* the **judge** (:mod:`.judges`) with the reference and the tolerance, which the learner's check
+  cell never shows;
+* the data the question gives (``given``), handed to the notebook by :func:`given` so that the
+  exercise cell shows the question's data but not how it was made;
+* the **test table** (``examples``): the answers a learner might type, each with the verdict and
+  the words of the feedback it must get — at least one answer that is right in another form than
+  the worked solution, and the typical wrong answers. The course's tests run every example
+  through the student copy of the notebook;
+* ``forbidden``: text that would give the answer away, which no visible cell of a student copy may
+  contain;
+* ``level``: where it stands in the notebook's climb: ``apply`` (use the idea), ``predict`` (say
+  what will happen before computing it), ``extend`` (carry the idea to a new case).
+"""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any, Literal
+
+from .feedback import NOT_YET, Feedback, Status, off
+from .judges import Judge
+from .reading import Unreadable
+
+Level = Literal["apply", "predict", "extend"]
+_ID = re.compile(r"\d\d\.\d")
+
+
+@dataclass(frozen=True)
+class Example:
+    """One row of an exercise's test table.
+
+    ``code`` is what a learner might write in place of the ``...`` of the exercise cell (it is run
+    in the notebook, after the exercise cell's own lines); ``status`` the verdict it must get;
+    ``says`` words the feedback must contain (for a wrong answer: the diagnosis).
+    """
+
+    code: str
+    status: Status
+    says: str = ""
+
+
+@dataclass(frozen=True)
+class Exercise:
+    """One exercise of the course (see the module docstring)."""
+
+    id: str
+    level: Level
+    judge: Judge
+    examples: tuple[Example, ...]
+    given: Callable[[], Any] | None = None
+    forbidden: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        if not _ID.fullmatch(self.id):
+            raise ValueError(f"an exercise id is 'NN.k' (notebook, number), got {self.id!r}")
+        if self.level not in ("apply", "predict", "extend"):
+            raise ValueError(f"{self.id}: level must be apply, predict or extend")
+
+
+def _modules() -> list[str]:
+    package = __name__.rsplit(".", 1)[0]
+    path = importlib.import_module(package).__path__
+    return sorted(
+        f"{package}.{m.name}" for m in pkgutil.iter_modules(path) if m.name.startswith("nb")
+    )
+
+
+_EXERCISES: dict[str, Exercise] | None = None
+
+
+def exercises() -> dict[str, Exercise]:
+    """Every exercise of the course by id, in course order (the key modules load on first use)."""
+    global _EXERCISES
+    if _EXERCISES is None:
+        found: dict[str, Exercise] = {}
+        for name in _modules():
+            for exercise in importlib.import_module(name).EXERCISES:
+                if exercise.id in found:
+                    raise ValueError(f"exercise {exercise.id} is defined twice")
+                found[exercise.id] = exercise
+        _EXERCISES = found
+    return _EXERCISES
+
+
+def _lookup(exercise: object) -> Exercise:
+    if not isinstance(exercise, str):
+        raise TypeError(f"exercise must be an id such as '05.2', got {type(exercise).__name__}")
+    key = exercises().get(exercise.strip())
+    if key is None:
+        raise ValueError(f"there is no exercise {exercise!r} in the course")
+    return key
+
+
+def check(exercise: str, answer: object) -> Feedback:
+    """Judge a learner's answer to an exercise of the course.
+
+    Parameters
+    ----------
+    exercise : str
+        The exercise, ``"NN.k"``: notebook ``NN``, exercise ``k``.
+    answer : object
+        The learner's answer; ``...`` (the placeholder of the exercise cell) means not yet
+        attempted.
+
+    Returns
+    -------
+    Feedback
+        ``correct``, ``off`` with the likely reason, or ``not yet``. Shown by Jupyter as the
+        cell's output; nothing is printed.
+
+    Raises
+    ------
+    TypeError, ValueError
+        If ``exercise`` is not the id of an exercise of the course (a mistake in the notebook,
+        not in the answer). An answer never raises: whatever it is, it gets feedback.
+
+    Examples
+    --------
+    >>> check("05.1", ...)
+    Exercise 05.1 — not yet: replace the ... with your answer and run the cell again
+    """
+    key = _lookup(exercise)
+    if answer is Ellipsis:
+        return Feedback(key.id, "not yet", NOT_YET)
+    try:
+        verdict = key.judge.judge(answer)
+    except Unreadable as reason:
+        verdict = off(str(reason))
+    return Feedback(key.id, verdict.status, verdict.message)
+
+
+def given(exercise: str) -> Any:
+    """The data an exercise's question gives (a fresh copy each call).
+
+    Examples
+    --------
+    >>> R = given("05.1")
+    >>> R.shape
+    (3, 3)
+    """
+    key = _lookup(exercise)
+    if key.given is None:
+        raise ValueError(f"exercise {key.id} gives no data")
+    return key.given()

@@ -1,0 +1,199 @@
+"""Exercises that teach: the answer key, the check cells, the student copies run with wrong answers.
+
+For every notebook of the course, the exercises of its student copy are executed cell by cell —
+the notebook's first code cell (its imports), then each exercise cell with the ``...`` replaced by
+every answer of the exercise's test table, then its check cell — and the feedback must say what
+the table says: ``correct`` for the answers that are right in another form, ``off`` with the
+expected diagnosis for the typical mistakes, ``not yet`` for the untouched ``...``. The cells run
+in this process (their sources are executed as they stand in the student copy), which takes a
+fraction of a second; the teacher's edition is executed once, by strict nbval.
+
+The tests also check the structure the course promises: the check cell names the exercise and
+the answer only, nothing a student sees gives the answer away, the exercises climb from applying
+to predicting to extending, no question is a yes/no a guess can pass.
+"""
+
+from __future__ import annotations
+
+import ast
+import contextlib
+import io
+import re
+from pathlib import Path
+from typing import Any
+
+import nbformat
+import pytest
+
+from eulerlib.course.exercises import ChoiceJudge, Exercise, exercises
+from eulerlib.course.student import student_copy
+
+REPO = Path(__file__).resolve().parents[1]
+NOTEBOOKS = sorted((REPO / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+IDS = [path.name for path in NOTEBOOKS]
+KEY = exercises()
+
+CHECK_CELL = re.compile(r'check\("(\d\d\.\d)", (answer_\d)\)')
+PLACEHOLDER = re.compile(r"^(answer_\d) = \.\.\.\s*$", re.MULTILINE)
+LEVELS = ("apply", "predict", "extend")
+
+notebook_params = pytest.mark.parametrize("path", NOTEBOOKS, ids=IDS)
+
+
+def tags(cell: Any) -> list[str]:
+    return list(cell.get("metadata", {}).get("tags", []))
+
+
+def read(path: Path) -> Any:
+    return nbformat.read(str(path), as_version=4)
+
+
+def number_of(path: Path) -> str:
+    return path.name[:2]
+
+
+def exercise_cells(notebook: Any) -> list[tuple[Any, Any | None, Any]]:
+    """``(exercise, solution or None, check)`` cells of each exercise, in order."""
+    found: list[list[Any]] = []
+    for cell in notebook.cells:
+        kind = [t for t in tags(cell) if t in ("exercise", "solution", "check")]
+        if not kind:
+            continue
+        if kind[0] == "exercise":
+            found.append([cell, None, None])
+        elif kind[0] == "solution":
+            found[-1][1] = cell
+        else:
+            found[-1][2] = cell
+    return [(e, s, c) for e, s, c in found]
+
+
+def key_of(path: Path) -> list[Exercise]:
+    return [ex for ex in KEY.values() if ex.id.startswith(number_of(path) + ".")]
+
+
+def without_magics(source: str) -> str:
+    return "\n".join(
+        line for line in source.splitlines() if not line.lstrip().startswith(("%", "!"))
+    )
+
+
+def run(source: str, namespace: dict[str, Any]) -> tuple[Any, str]:
+    """Execute a cell's source; return the value of its last expression and what it printed."""
+    tree = ast.parse(source)
+    last = tree.body.pop() if tree.body and isinstance(tree.body[-1], ast.Expr) else None
+    printed = io.StringIO()
+    with contextlib.redirect_stdout(printed):
+        exec(compile(tree, "<cell>", "exec"), namespace)
+        value = (
+            eval(compile(ast.Expression(last.value), "<cell>", "eval"), namespace)
+            if last is not None
+            else None
+        )
+    return value, printed.getvalue()
+
+
+# --- structure -----------------------------------------------------------------------------------
+
+
+@notebook_params
+def test_three_or_four_exercises_that_climb(path: Path) -> None:
+    cells = exercise_cells(read(path))
+    keys = key_of(path)
+    assert 3 <= len(cells) <= 4, f"{path.name}: {len(cells)} exercises, expected 3 or 4"
+    assert [k.id for k in keys] == [f"{number_of(path)}.{n}" for n in range(1, len(cells) + 1)]
+    levels = [k.level for k in keys]
+    assert set(levels) == set(LEVELS), f"{path.name}: levels {levels}"
+    assert levels == sorted(levels, key=LEVELS.index), f"{path.name}: levels {levels} do not climb"
+
+
+@notebook_params
+def test_cells_of_each_exercise(path: Path) -> None:
+    for number, (exercise, solution, check) in enumerate(exercise_cells(read(path)), start=1):
+        where = f"{path.name}, exercise {number}"
+        assert solution is not None and check is not None, f"{where}: solution and check needed"
+        match = CHECK_CELL.fullmatch(check.source.strip())
+        assert match, f'{where}: the check cell must be exactly check("NN.k", answer_k)'
+        assert match.group(1) == f"{number_of(path)}.{number}", where
+        assert match.group(2) == f"answer_{number}", where
+        assert PLACEHOLDER.search(exercise.source), f"{where}: no `answer_{number} = ...` line"
+        assert f"answer_{number} =" in solution.source, f"{where}: the solution sets no answer"
+        assert "hide-input" in tags(solution), f"{where}: the solution is not folded on the site"
+        hidden = solution.get("metadata", {}).get("jupyter", {}).get("source_hidden")
+        assert hidden is True, f"{where}: the solution is not folded in JupyterLab"
+
+
+@notebook_params
+def test_one_exercise_is_more_than_a_one_line_call(path: Path) -> None:
+    sizes = [len(ast.parse(solution.source).body) for _, solution, _ in exercise_cells(read(path))]
+    assert max(sizes) >= 2, f"{path.name}: every worked solution is a single statement"
+
+
+def test_every_exercise_of_the_key_is_in_a_notebook() -> None:
+    in_notebooks = {
+        CHECK_CELL.fullmatch(check.source.strip()).group(1)  # type: ignore[union-attr]
+        for path in NOTEBOOKS
+        for _, _, check in exercise_cells(read(path))
+    }
+    assert set(KEY) == in_notebooks
+
+
+def test_test_tables_have_equivalent_answers_and_typical_mistakes() -> None:
+    for exercise in KEY.values():
+        right = [e for e in exercise.examples if e.status == "correct"]
+        wrong = [e for e in exercise.examples if e.status == "off"]
+        assert right, f"{exercise.id}: no answer that is right in another form"
+        assert len(wrong) >= 2, f"{exercise.id}: fewer than two typical wrong answers"
+        assert all(e.says for e in wrong), f"{exercise.id}: a wrong answer without a diagnosis"
+
+
+def test_no_yes_no_question() -> None:
+    for exercise in KEY.values():
+        if isinstance(exercise.judge, ChoiceJudge):
+            assert len(exercise.judge.options) >= 3, exercise.id
+
+
+@notebook_params
+def test_stored_teachers_edition_says_correct(path: Path) -> None:
+    for _, _, check in exercise_cells(read(path)):
+        text = "".join(
+            output.get("data", {}).get("text/plain", "") for output in check.get("outputs", [])
+        )
+        assert re.match(r"Exercise \d\d\.\d — correct", text), f"{path.name}: {text[:100]!r}"
+
+
+# --- the student copy ---------------------------------------------------------------------------
+
+
+@notebook_params
+def test_student_copy_gives_nothing_away(path: Path) -> None:
+    copy = student_copy(read(path))
+    visible = "\n".join(cell.source for cell in copy.cells)
+    for exercise in key_of(path):
+        for text in exercise.forbidden:
+            assert text not in visible, f"{path.name}: {exercise.id} is given away by {text!r}"
+
+
+@notebook_params
+def test_student_copy_diagnoses_every_answer_of_the_test_tables(path: Path) -> None:
+    copy = student_copy(read(path))
+    first = next(cell for cell in copy.cells if cell.cell_type == "code")
+    namespace: dict[str, Any] = {}
+    run(without_magics(first.source), namespace)
+    keys = {k.id: k for k in key_of(path)}
+    for exercise, solution, check in exercise_cells(copy):
+        assert solution is None, f"{path.name}: the student copy kept a solution"
+        exercise_id = CHECK_CELL.fullmatch(check.source.strip()).group(1)  # type: ignore[union-attr]
+        _, printed = run(exercise.source, namespace)
+        for text in keys[exercise_id].forbidden:
+            assert text not in printed, f"{exercise_id}: the exercise cell prints {text!r}"
+        feedback, _ = run(check.source, namespace)
+        assert feedback.status == "not yet", f"{exercise_id}: {feedback}"
+        for example in keys[exercise_id].examples:
+            source = PLACEHOLDER.sub(
+                lambda m, c=example.code: f"{m.group(1)} = {c}", exercise.source
+            )
+            run(source, namespace)
+            feedback, _ = run(check.source, namespace)
+            assert feedback.status == example.status, f"{example.code!r}: {feedback}"
+            assert example.says in feedback.message, f"{example.code!r}: {feedback}"

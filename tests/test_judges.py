@@ -1,0 +1,280 @@
+"""The judges of the exercises: equally right answers pass, typical mistakes get their diagnosis.
+
+References are written out here or built by SciPy, never by the judge under test. The messages
+must never contain the reference (the check cell a student sees names the exercise and the answer
+only, so a wrong answer must not be answered with the right one).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import sympy as sp
+from scipy.spatial.transform import Rotation
+
+from eulerlib.course.exercises import (
+    AnglesJudge,
+    ArrayJudge,
+    ChoiceJudge,
+    Constraint,
+    ExpressionJudge,
+    Feedback,
+    Mistake,
+    NumberJudge,
+    QuaternionJudge,
+    check,
+    exercises,
+    given,
+)
+from eulerlib.course.exercises.reading import Unreadable, read_numbers
+
+QUARTER_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])  # typed in
+
+
+def verdict(judge, answer):
+    try:
+        return judge.judge(answer)
+    except Unreadable as reason:
+        return type("V", (), {"status": "off", "message": str(reason)})()
+
+
+# --- reading answers -------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("answer", "words"),
+    [
+        ("0.5", "is text"),
+        (b"0.5", "is text"),
+        (True, "yes/no"),
+        (np.True_, "yes/no"),
+        (None, "is None"),
+        (1 + 2j, "imaginary part"),
+        ([1.0, "2", 3.0], "not a number"),
+        ([1.0, None, 3.0], "not a number"),
+        (np.ma.masked_array([1.0]), "masked"),
+        (float("nan"), "NaN"),
+        ([1.0, 2.0], "shape (2,)"),
+        (sp.Symbol("x") + 1, "symbol(s) x"),
+    ],
+)
+def test_unreadable_answers_say_why(answer, words) -> None:
+    shape = (2,) if isinstance(answer, np.ma.MaskedArray) else ()
+    shape = (3,) if isinstance(answer, list) else shape
+    with pytest.raises(Unreadable, match=words.replace("(", r"\(").replace(")", r"\)")):
+        read_numbers(answer, shape, "your answer")
+
+
+def test_sympy_numbers_and_real_complex_numbers_are_read() -> None:
+    assert read_numbers(sp.Rational(1, 2), (), "x") == 0.5
+    assert read_numbers(sp.Matrix([[1, 0], [0, 1]]), (2, 2), "x").tolist() == [[1, 0], [0, 1]]
+    assert read_numbers(2 + 0j, (), "x") == 2.0
+
+
+# --- numbers ---------------------------------------------------------------------------------
+
+
+def test_number_modulo_a_turn_and_units() -> None:
+    judge = NumberJudge(30.0, unit="deg", modulo=360.0, what="the angle")
+    for right in (30, 390, -330, 30 + 1e-12):
+        assert judge.judge(right).status == "correct"
+    assert "radians" in judge.judge(math.radians(30)).message
+    assert "wrong sign" in judge.judge(-30).message
+    assert judge.judge(31).status == "off"
+    in_radians = NumberJudge(math.pi / 6, unit="rad", modulo=2 * math.pi)
+    assert "degrees" in in_radians.judge(30).message
+    assert in_radians.judge(math.pi / 6 + 2 * math.pi).status == "correct"
+
+
+def test_number_without_modulo_refuses_a_turn_more() -> None:
+    assert NumberJudge(13.0).judge(13.0 + 360).status == "off"
+
+
+def test_number_mistakes_come_with_their_message() -> None:
+    judge = NumberJudge(13.0, mistakes=(Mistake(19.0, "you added the coordinates"),))
+    assert judge.judge(19).message == "you added the coordinates"
+
+
+def test_a_wrong_number_is_not_answered_with_the_reference() -> None:
+    message = NumberJudge(13.0).judge(12.0).message
+    assert "13" not in message
+
+
+@pytest.mark.parametrize("tol", [float("nan"), -1.0, "1e-9", None])
+def test_tolerances_are_checked(tol) -> None:
+    with pytest.raises((TypeError, ValueError), match="tol"):
+        NumberJudge(1.0, tol=tol)
+
+
+# --- arrays ----------------------------------------------------------------------------------
+
+
+def test_matrix_diagnoses() -> None:
+    judge = ArrayJudge(QUARTER_Z, what="your R", rotation=True)
+    assert judge.judge(QUARTER_Z.tolist()).status == "correct"
+    assert "transpose" in judge.judge(QUARTER_Z.T).message
+    assert "reflection" in judge.judge(QUARTER_Z @ np.diag([1.0, 1.0, -1.0])).message
+    assert "not orthonormal" in judge.judge(2 * QUARTER_Z).message
+    other = Rotation.from_euler("x", 30, degrees=True).as_matrix()
+    message = judge.judge(other).message
+    assert "entries" in message and "-1" not in message
+
+
+def test_complex_matrix_is_refused_not_accepted() -> None:
+    message = verdict(ArrayJudge(QUARTER_Z), QUARTER_Z + 1j).message
+    assert "imaginary" in message
+
+
+def test_vector_diagnoses() -> None:
+    judge = ArrayJudge([0.0, 2.0, 1.0], what="the point")
+    assert judge.judge([0, 2, 1]).status == "correct"
+    assert "opposite way" in judge.judge([0, -2, -1]).message
+    assert "never changes a length" in judge.judge([0, 2, 2]).message
+
+
+# --- angles ----------------------------------------------------------------------------------
+
+
+def scipy_matrix(seq: str, angles) -> np.ndarray:
+    return Rotation.from_euler(seq, angles, degrees=True).as_matrix()
+
+
+def test_angles_equal_modulo_a_turn_and_the_other_branch_pass() -> None:
+    judge = AnglesJudge([-100.0, 35.0, 160.0], "ZYX")
+    for right in ([-100, 35, 160], [260, 35, -200], [80, 145, -20], [80, 145, 340]):
+        assert np.allclose(scipy_matrix("ZYX", right), scipy_matrix("ZYX", [-100, 35, 160]))
+        assert judge.judge(right).status == "correct", right
+
+
+@pytest.mark.parametrize(
+    ("answer", "words"),
+    [
+        (np.radians([-100, 35, 160]), "look like radians"),
+        ([160, 35, -100], "reverse order"),
+        ([-100, -35, 160], "pitch has the wrong sign"),
+        ([80, 35, 160], "yaw is off by 180°"),
+    ],
+)
+def test_angle_mistakes_are_diagnosed(answer, words) -> None:
+    judge = AnglesJudge([-100.0, 35.0, 160.0], "rose")
+    result = judge.judge(answer)
+    assert result.status == "off"
+    assert words in result.message
+
+
+def test_intrinsic_read_as_extrinsic_is_diagnosed() -> None:
+    angles = [30.0, 20.0, 10.0]
+    extrinsic = Rotation.from_matrix(scipy_matrix("ZYX", angles)).as_euler("zyx", degrees=True)
+    result = AnglesJudge(angles, "ZYX").judge(extrinsic)
+    assert "'zyx'" in result.message and "fixed axes" in result.message
+
+
+def test_constraints_are_enforced_and_named() -> None:
+    at_lock = [0.0, 90.0, 45.0]  # yaw 0, roll − yaw = 45
+    judge = AnglesJudge(
+        at_lock,
+        "ZYX",
+        constraints=(Constraint(lambda a: abs(a[0]) < 1e-9, "the question asks for yaw = 0"),),
+    )
+    assert judge.judge([0, 90, 45]).status == "correct"
+    result = judge.judge([20, 90, 65])  # the same rotation, yaw not 0
+    assert np.allclose(scipy_matrix("ZYX", [20, 90, 65]), scipy_matrix("ZYX", at_lock))
+    assert result.status == "off" and "yaw = 0" in result.message
+
+
+def test_a_far_rotation_gets_a_geometric_hint_without_the_reference() -> None:
+    message = AnglesJudge([10.0, 20.0, 30.0], "ZYX").judge([50, -40, 100]).message
+    assert "points" in message and "°" in message
+    assert "10" not in message.split("points")[0]
+
+
+# --- quaternions -----------------------------------------------------------------------------
+
+
+def test_quaternion_double_cover_and_layouts() -> None:
+    q = Rotation.from_euler("z", 60, degrees=True).as_quat()  # (x, y, z, w)
+    judge = QuaternionJudge(q)
+    assert judge.judge(q).status == "correct"
+    assert "double cover" in judge.judge(-q).message
+    assert "wrong order" in judge.judge(np.roll(q, 1)).message  # (w, x, y, z)
+    conjugate = q * [-1, -1, -1, 1]
+    assert "conjugate" in judge.judge(conjugate).message
+    assert "length 2" in judge.judge(2 * q).message
+    first = QuaternionJudge(np.roll(q, 1), scalar_first=True)
+    assert first.judge(np.roll(q, 1)).status == "correct"
+    assert "scalar-first" in first.judge(q).message
+
+
+# --- expressions -----------------------------------------------------------------------------
+
+
+def test_expressions_are_simplified_before_judging() -> None:
+    a, b = sp.symbols("a b", real=True)
+    rx = lambda t: sp.Matrix(  # noqa: E731 - typed in, the oracle
+        [[1, 0, 0], [0, sp.cos(t), -sp.sin(t)], [0, sp.sin(t), sp.cos(t)]]
+    )
+    judge = ExpressionJudge(rx(a + b), what="your product")
+    assert judge.judge(rx(a) * rx(b)).status == "correct"  # unsimplified product
+    assert "transpose" in judge.judge((rx(a) * rx(b)).T).message
+    wrong = judge.judge(rx(a) * rx(-b))
+    assert wrong.status == "off" and "entry (1, 1)" in wrong.message
+    assert "cos(a + b)" not in wrong.message  # the learner's entry, not the reference's
+
+
+def test_numeric_matrix_against_an_exact_sympy_matrix() -> None:
+    judge = ExpressionJudge(sp.Matrix(QUARTER_Z.astype(int)))
+    assert judge.judge(QUARTER_Z).status == "correct"
+    assert judge.judge(QUARTER_Z.T).status == "off"
+
+
+def test_either_sign_when_the_question_allows_it() -> None:
+    a, c = sp.symbols("alpha gamma", real=True)
+    assert ExpressionJudge(a + c, up_to_sign=True).judge(-a - c).status == "correct"
+    assert "sign" in ExpressionJudge(a + c).judge(-a - c).message
+    assert "text" in verdict(ExpressionJudge(a + c), "alpha + gamma").message
+
+
+# --- choices ---------------------------------------------------------------------------------
+
+
+def test_choices_need_three_options_and_an_explanation_for_each_wrong_one() -> None:
+    with pytest.raises(ValueError, match="at least three"):
+        ChoiceJudge({"a": "yes", "b": "no"}, "a", {"b": "why"})
+    with pytest.raises(ValueError, match="explanation"):
+        ChoiceJudge({"a": "1", "b": "2", "c": "3"}, "a", {"b": "why"})
+    judge = ChoiceJudge({"a": "1", "b": "2", "c": "3"}, "b", {"a": "too few", "c": "too many"})
+    assert judge.judge(" B ").status == "correct"
+    assert judge.judge("c").message == "too many"
+    assert "one of the options" in judge.judge(True).message
+
+
+# --- check and given -------------------------------------------------------------------------
+
+
+def test_check_says_not_yet_for_the_placeholder_and_never_raises_for_an_answer() -> None:
+    some = next(iter(exercises()))
+    assert check(some, ...).status == "not yet"
+    for answer in (None, "text", True, 1j, object(), [[1, 2], [3]], {"a": 1}):
+        result = check(some, answer)
+        assert isinstance(result, Feedback) and result.status == "off"
+
+
+def test_check_names_a_wrong_exercise_id() -> None:
+    with pytest.raises(ValueError, match=r"no exercise '99\.9'"):
+        check("99.9", 1)
+    with pytest.raises(TypeError, match="exercise must be an id"):
+        check(5.1, 1)  # type: ignore[arg-type]
+
+
+def test_feedback_reads_as_a_sentence() -> None:
+    text = str(Feedback("05.1", "off", "yaw is off by 180°"))
+    assert text == "Exercise 05.1 — off: yaw is off by 180°"
+
+
+def test_given_returns_a_fresh_copy() -> None:
+    with_data = [key for key, ex in exercises().items() if ex.given is not None]
+    first = given(with_data[0])
+    first[...] = 0
+    assert np.any(given(with_data[0]) != 0)
