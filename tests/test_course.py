@@ -86,7 +86,9 @@ def test_notebook_is_normalized(path: Path) -> None:
 def test_notebook_metadata_and_counts(path: Path) -> None:
     notebook = read(path)
     assert notebook.metadata.get("kernelspec", {}).get("name") == "python3"
-    assert set(notebook.metadata) <= {"kernelspec", "language_info"}, sorted(notebook.metadata)
+    assert set(notebook.metadata) <= {"kernelspec", "language_info", "widgets"}, sorted(
+        notebook.metadata
+    )
     counts = [cell.execution_count for cell in notebook.cells if cell.cell_type == "code"]
     assert counts == list(range(1, len(counts) + 1)), f"execution counts {counts}"
     for index, cell in enumerate(notebook.cells):

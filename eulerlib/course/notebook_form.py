@@ -10,7 +10,9 @@ the stored notebook must be exactly what a fresh execution writes, in a normal f
 * cell metadata reduced to the ``tags`` and to JupyterLab's folding state,
   ``jupyter.source_hidden`` and ``jupyter.outputs_hidden`` (worked solutions are stored folded);
   no timings, no ``collapsed``/``scrolled`` state, no empty entries;
-* notebook metadata reduced to the ``python3`` kernelspec and the language name;
+* notebook metadata reduced to the ``python3`` kernelspec, the language name and, when a cell
+  shows a widget, the widgets' saved state (``widgets``), which lets JupyterLab draw a widget's
+  first state — the explorer's picture and sliders — when no kernel is running;
 * cell ids derived from the cell's position (``cell-000``, ``cell-001``, …), so re-running
   never changes them.
 
@@ -141,7 +143,10 @@ def normalize_notebook(notebook: Any) -> Any:
     resources: dict[str, Any] = {}
     for preprocessor in (KeepCellMetadata(), CoalesceStreamsPreprocessor(), NumberCells()):
         result, resources = preprocessor.preprocess(result, resources)
+    widgets = result.metadata.get("widgets")
     result.metadata = {"kernelspec": dict(KERNELSPEC), "language_info": {"name": "python"}}
+    if widgets:
+        result.metadata["widgets"] = widgets
     result.nbformat, result.nbformat_minor = 4, 5
     return result
 
