@@ -53,6 +53,7 @@ __all__ = [
 ]
 
 KERNELSPEC = {"display_name": "Python 3", "language": "python", "name": "python3"}
+_WIDGET_STATE = "application/vnd.jupyter.widget-state+json"
 
 #: The cell metadata the normal form keeps, as key paths (nbconvert's mask notation).
 CELL_METADATA_KEPT = frozenset(
@@ -143,10 +144,10 @@ def normalize_notebook(notebook: Any) -> Any:
     resources: dict[str, Any] = {}
     for preprocessor in (KeepCellMetadata(), CoalesceStreamsPreprocessor(), NumberCells()):
         result, resources = preprocessor.preprocess(result, resources)
-    widgets = result.metadata.get("widgets")
+    saved = result.metadata.get("widgets", {}).get(_WIDGET_STATE, {})
     result.metadata = {"kernelspec": dict(KERNELSPEC), "language_info": {"name": "python"}}
-    if widgets:
-        result.metadata["widgets"] = widgets
+    if saved.get("state"):  # what nbclient stores after a cell displayed a widget
+        result.metadata["widgets"] = {_WIDGET_STATE: saved}
     result.nbformat, result.nbformat_minor = 4, 5
     return result
 
