@@ -184,6 +184,21 @@ def test_constraints_are_enforced_and_named() -> None:
     assert result.status == "off" and "yaw = 0" in result.message
 
 
+def test_an_exercise_mistake_is_named_when_the_answer_gives_its_rotation() -> None:
+    # At pitch +90° only roll − yaw is defined; adding instead of subtracting is the mistake.
+    sum_not_difference = Mistake([0.0, 90.0, 95.0], "roll + yaw belongs to pitch −90°")
+    judge = AnglesJudge([25.0, 90.0, 70.0], "ZYX", mistakes=(sum_not_difference,))
+    same_as_mistake = [15.0, 90.0, 110.0]  # another split of roll − yaw = 95°
+    assert np.allclose(scipy_matrix("ZYX", same_as_mistake), scipy_matrix("ZYX", [0, 90, 95]))
+    assert not np.allclose(scipy_matrix("ZYX", [0, 90, 95]), scipy_matrix("ZYX", [25, 90, 70]))
+    result = judge.judge(same_as_mistake)
+    assert result.status == "off" and "roll + yaw" in result.message
+    # an answer that is neither right nor the mistake does not get the mistake's message
+    other = judge.judge([0.0, 90.0, 10.0])
+    assert other.status == "off" and "roll + yaw" not in other.message
+    assert judge.judge([0.0, 90.0, 45.0]).status == "correct"
+
+
 def test_a_far_rotation_gets_a_geometric_hint_without_the_reference() -> None:
     message = AnglesJudge([10.0, 20.0, 30.0], "ZYX").judge([50, -40, 100]).message
     assert "points" in message and "°" in message
