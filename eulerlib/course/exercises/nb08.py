@@ -1,0 +1,181 @@
+"""Answer key of notebook 08, conventions compared (Rose, Baker, ROS; NED, ENU and the camera)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from eulerlib import convert_angles, euler_to_matrix, matrix_to_euler, rot_x, rot_y, rot_z
+
+from .judges import AnglesJudge, ChoiceJudge, Mistake
+from .key import Example, Exercise
+
+_HAB = (120.0, -30.0, 45.0)  # Baker's heading, attitude, bank of 08.1, degrees
+_NED = (30.0, 10.0, 5.0)  # aerospace yaw, pitch, roll of 08.3 (NED body in the NED world)
+
+# 08.1: Baker's matrix built from its elementary rotations (R = Ry Rz Rx), read as Rose's angles.
+_BAKER_MATRIX = (
+    rot_y(_HAB[0], degrees=True) @ rot_z(_HAB[1], degrees=True) @ rot_x(_HAB[2], degrees=True)
+)
+_ROSE_OF_BAKER = matrix_to_euler(_BAKER_MATRIX, "rose", degrees=True)
+
+# 08.3: relabelling the world NED → ENU (T = Rz(90°) Rx(180°)) on the left and the body
+# z down → z up (D = Rx(180°)) on the right gives T Rz(w) Ry(v) Rx(u) D = Rz(90° − w) Ry(−v) Rx(u):
+# as ROS angles (roll, pitch, yaw) = (u, −v, 90° − w).
+_ROS_OF_NED = (_NED[2], -_NED[1], 90.0 - _NED[0])
+
+_SIDEWAYS = (
+    "a turn about y keeps the y component of the line of sight, and y is the image's vertical: "
+    "the view swings sideways, it does not rise or sink"
+)
+
+EXERCISES = [
+    Exercise(
+        id="08.1",
+        level="apply",
+        judge=AnglesJudge(
+            _ROSE_OF_BAKER,
+            "rose",
+            degrees=True,
+            what="your yaw, pitch, roll",
+            mistakes=(
+                Mistake(
+                    _HAB,
+                    "these are Baker's three numbers read as Rose's: in another convention the "
+                    "same numbers are another rotation; build Baker's matrix and read Rose's "
+                    "angles from it",
+                ),
+                Mistake(
+                    [_HAB[0], -_HAB[1], _HAB[2]],
+                    "that is the same aircraft relabelled into z-up coordinates (P R Pᵀ); the "
+                    "question asks for the same matrix in the same coordinates",
+                ),
+                Mistake(
+                    convert_angles(_HAB, "rose", "baker", degrees=True),
+                    "that converts the other way, from Rose to Baker: the numbers you have are "
+                    "Baker's, so the conversion starts from 'baker'",
+                ),
+            ),
+        ),
+        given=lambda: np.array(_HAB),
+        examples=(
+            Example(
+                "matrix_to_euler(heading_attitude_bank_to_matrix(*hab_ex, degrees=True), 'rose',"
+                " degrees=True)",
+                "correct",
+            ),
+            Example(
+                "convert_angles(hab_ex, 'baker', 'rose', degrees=True) + [360, 0, -360]",
+                "correct",
+                "rotation asked for",
+            ),
+            Example(  # the other triple: yaw and roll turned by 180°, pitch 180° − pitch
+                "convert_angles(hab_ex, 'baker', 'rose', degrees=True) * [1, -1, 1] + 180",
+                "correct",
+                "rotation asked for",
+            ),
+            Example("hab_ex", "off", "Baker's three numbers"),
+            Example("[120, 30, 45]", "off", "relabelled"),
+            Example("convert_angles(hab_ex, 'rose', 'baker', degrees=True)", "off", "other way"),
+            Example(
+                "convert_angles(hab_ex, 'baker', 'rose', degrees=True)[::-1]", "off", "reverse"
+            ),
+            Example(
+                "np.radians(convert_angles(hab_ex, 'baker', 'rose', degrees=True))",
+                "off",
+                "radians",
+            ),
+        ),
+        forbidden=("130.89", "48.59", "94.1"),
+    ),
+    Exercise(
+        id="08.2",
+        level="predict",
+        judge=ChoiceJudge(
+            options={
+                "a": "further to the right",
+                "b": "further to the left",
+                "c": "higher",
+                "d": "lower",
+            },
+            answer="a",
+            explanations={
+                "a": "the camera's y points down, and a right-handed turn about an axis pointing "
+                "down swings the line of sight (z) toward x, the right of the image",
+                "b": "a positive turn about an axis pointing up turns to the left (a yaw with z "
+                "up); the camera's y points down, so the turn goes the other way",
+                "c": _SIDEWAYS,
+                "d": _SIDEWAYS,
+            },
+        ),
+        examples=(
+            Example("'a'", "correct", "points"),
+            Example("'A'", "correct", "right of the image"),
+            Example("'b'", "off", "points down"),
+            Example("'c'", "off", "sideways"),
+            Example("'d'", "off", "sideways"),
+            Example("1", "off", "as text"),
+        ),
+    ),
+    Exercise(
+        id="08.3",
+        level="extend",
+        judge=AnglesJudge(
+            _ROS_OF_NED,
+            "ros",
+            degrees=True,
+            what="your roll, pitch, yaw",
+            mistakes=(
+                Mistake(
+                    _NED[::-1],
+                    "you put the NED angles in ROS order but kept the frames: ENU and a body with "
+                    "z up are other axes; relabel the world (NED → ENU) and the body "
+                    "(z down → z up)",
+                ),
+                Mistake(
+                    matrix_to_euler(
+                        np.diag([1.0, -1.0, -1.0])
+                        @ euler_to_matrix(_NED, "rose", degrees=True)
+                        @ np.diag([1.0, -1.0, -1.0]),
+                        "ros",
+                        degrees=True,
+                    ),
+                    "you relabelled the body and the world alike (z down → z up), but the world "
+                    "is ENU, not north-west-up: the world needs its own relabelling, NED → ENU",
+                ),
+                Mistake(
+                    matrix_to_euler(
+                        np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -1.0]])
+                        @ euler_to_matrix(_NED, "rose", degrees=True),
+                        "ros",
+                        degrees=True,
+                    ),
+                    "you relabelled the world (NED → ENU) but not the body: a ROS body has y left "
+                    "and z up, so the body axes need relabelling too (on the right, transposed)",
+                ),
+                Mistake(
+                    [_NED[2], -_NED[1], 90.0 + _NED[0]],
+                    "the ENU yaw counts from east toward north, counterclockwise seen from above, "
+                    "while the NED heading counts clockwise from north: it is 90° − heading",
+                ),
+            ),
+        ),
+        given=lambda: np.array(_NED),
+        examples=(
+            Example(
+                "matrix_to_euler(np.array([[0, 1, 0], [1, 0, 0], [0, 0, -1]])"
+                " @ euler_to_matrix(ned_ex, 'rose', degrees=True) @ np.diag([1, -1, -1]),"
+                " 'ros', degrees=True)",
+                "correct",
+            ),
+            Example("[5, -10, 420]", "correct", "rotation asked for"),
+            Example("[185, 190, 240]", "correct", "rotation asked for"),
+            Example("ned_ex[::-1]", "off", "kept the frames"),
+            Example("[5, -10, -30]", "off", "ENU, not north-west-up"),
+            Example("[-175, -10, 60]", "off", "not the body"),
+            Example("[5, -10, 120]", "off", "90° − heading"),
+            Example("[5, 10, 60]", "off", "pitch has the wrong sign"),
+            Example("[60, -10, 5]", "off", "reverse order"),
+        ),
+        forbidden=("-10, 60", "-10.0, 60.0"),
+    ),
+]
