@@ -1,0 +1,170 @@
+"""Answer key of notebook 09, numerical robustness (Rose eq 3b and eq 4; Baker's poles)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import NDArray
+
+from eulerlib import rot_x, rot_y, rot_z
+
+from .judges import AnglesJudge, ChoiceJudge, Constraint, Mistake, NumberJudge
+from .key import Example, Exercise
+
+_DISTANCE = 1e-9  # 09.1: how far below 90° the pitch of the given matrix is, radians
+_HEADING, _BANK = -70.0, 20.0  # 09.3: Baker's north pole, degrees; only heading + bank survives
+
+
+def _close_to_lock() -> NDArray[np.float64]:
+    """09.1: a yaw-pitch-roll matrix whose pitch is π/2 − 1e-9, built from sin d and cos d."""
+    s, c = math.sin(_DISTANCE), math.cos(_DISTANCE)  # cos(pitch) and sin(pitch)
+    pitch = np.array([[s, 0.0, c], [0.0, 1.0, 0.0], [-c, 0.0, s]])
+    matrix: NDArray[np.float64] = rot_z(0.7) @ pitch @ rot_x(-2.1)
+    return matrix
+
+
+def _multiply(A: NDArray[np.float64], B: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The matrix product written out entry by entry, so that it rounds the same everywhere."""
+    return np.array(
+        [
+            [A[i, 0] * B[0, j] + A[i, 1] * B[1, j] + A[i, 2] * B[2, j] for j in range(3)]
+            for i in range(3)
+        ]
+    )
+
+
+def _noisy_north_pole() -> NDArray[np.float64]:
+    """09.3: Baker's R = Ry(h) Rz(90°) Rx(b), the 90° made of two steps with exact decimals."""
+    first = np.array([[0.8432, -0.5376, 0.0], [0.5376, 0.8432, 0.0], [0.0, 0.0, 1.0]])
+    second = np.array([[0.5376, -0.8432, 0.0], [0.8432, 0.5376, 0.0], [0.0, 0.0, 1.0]])
+    attitude_90 = _multiply(first, second)  # about 32.52° + 57.48° about z
+    heading = rot_y(_HEADING, degrees=True)
+    return _multiply(_multiply(heading, attitude_90), rot_x(_BANK, degrees=True))
+
+
+def _general_formulas(m: NDArray[np.float64]) -> list[float]:
+    """Baker's general formulas, without the pole test (degrees)."""
+    return [
+        math.degrees(math.atan2(-m[2, 0], m[0, 0])),
+        math.degrees(math.asin(min(1.0, m[1, 0]))),
+        math.degrees(math.atan2(-m[1, 2], m[1, 1])),
+    ]
+
+
+_FLAT_SINE = (
+    "you used asin: next to 90° the sine is flat, r31 rounds to exactly −1 here and asin returns "
+    "exactly π/2; take the pitch from atan2 of its sine and its cosine instead"
+)
+_NOISE = (
+    "you used the general formulas: at the pole m20, m00, m12 and m11 are rounding noise (here "
+    "zeros), and atan2 of noise is no angle at all; at the north pole use heading = "
+    "atan2(m02, m22)"
+)
+
+EXERCISES = [
+    Exercise(
+        id="09.1",
+        level="apply",
+        judge=NumberJudge(
+            math.pi / 2 - _DISTANCE,
+            what="your pitch",
+            tol=1e-15,
+            unit="rad",
+            mistakes=(
+                Mistake(math.pi / 2, _FLAT_SINE),
+                Mistake(
+                    _DISTANCE,
+                    "that is the distance from 90°; the question asks for the pitch itself",
+                ),
+            ),
+        ),
+        given=_close_to_lock,
+        examples=(
+            Example(
+                "np.arctan2(-R_close[2, 0], np.hypot(R_close[0, 0], R_close[1, 0]))", "correct"
+            ),
+            Example(
+                "np.arctan2(-R_close[2, 0], np.hypot(R_close[2, 1], R_close[2, 2]))",
+                "correct",
+                "is right",
+            ),
+            Example("matrix_to_euler(R_close, 'ZYX')[1]", "correct", "is right"),
+            Example("-np.arcsin(R_close[2, 0])", "off", "asin"),
+            Example(
+                "np.degrees(np.arctan2(-R_close[2, 0], np.hypot(R_close[0, 0], R_close[1, 0])))",
+                "off",
+                "degrees",
+            ),
+            Example(
+                "np.arctan2(R_close[2, 0], np.hypot(R_close[0, 0], R_close[1, 0]))",
+                "off",
+                "wrong sign",
+            ),
+            Example("1e-9", "off", "distance from 90°"),
+        ),
+        forbidden=("np.pi / 2 - 1e-9", "1.5707963257948966"),
+    ),
+    Exercise(
+        id="09.2",
+        level="predict",
+        judge=ChoiceJudge(
+            options={"a": "about 1e-20", "b": "about 1e-16", "c": "about 1e-12", "d": "about 1e-8"},
+            answer="c",
+            explanations={
+                "a": "no formula can be that accurate: the doubles next to π/2 are about 2e-16 "
+                "apart, so a pitch near 90° cannot even be stored that closely",
+                "b": "that is what atan2 of the sine and the cosine achieves; asin reads the pitch "
+                "from r31 alone, where the error is about ε/d",
+                "c": "the error of asin is of the order of ε/d = 2e-16 / 1e-4: a rounding error "
+                "of r31 divided by the slope of the sine there, sin d ≈ d = 1e-4",
+                "d": "that is the worst case, near d = 1e-8; further from lock the error of asin "
+                "shrinks like 1/d",
+            },
+        ),
+        examples=(
+            Example("'c'", "correct", "ε/d"),
+            Example("'C '", "correct", "1e-4"),
+            Example("'b'", "off", "atan2"),
+            Example("'d'", "off", "worst case"),
+            Example("'a'", "off", "cannot even be stored"),
+            Example("1e-12", "off", "as text"),
+        ),
+    ),
+    Exercise(
+        id="09.3",
+        level="extend",
+        judge=AnglesJudge(
+            [_HEADING + _BANK, 90.0, 0.0],
+            "baker",
+            degrees=True,
+            what="your heading, attitude, bank",
+            constraints=(
+                Constraint(
+                    lambda a: abs((float(a[2]) + 180.0) % 360.0 - 180.0) <= 1e-9,
+                    "the question asks for Baker's choice at the poles, bank = 0°",
+                ),
+            ),
+            mistakes=(
+                Mistake(_general_formulas(_noisy_north_pole()), _NOISE),
+                Mistake([0.0, 90.0, 0.0], _NOISE),
+            ),
+        ),
+        given=_noisy_north_pole,
+        examples=(
+            Example("[np.degrees(np.arctan2(N_ex[0, 2], N_ex[2, 2])), 90.0, 0.0]", "correct"),
+            Example("[310, 90, 360]", "correct", "rotation asked for"),
+            Example(
+                "np.degrees([np.arctan2(-N_ex[2, 0], N_ex[0, 0]), np.arcsin(N_ex[1, 0]),"
+                " np.arctan2(-N_ex[1, 2], N_ex[1, 1])])",
+                "off",
+                "rounding noise",
+            ),
+            Example("[0, 90, 0]", "off", "atan2(m02, m22)"),
+            Example("[0, 90, -50]", "off", "bank = 0°"),
+            Example("[-50, -90, 0]", "off", "attitude has the wrong sign"),
+            Example("np.radians([-50, 90, 0])", "off", "radians"),
+        ),
+        forbidden=("-50",),
+    ),
+]
