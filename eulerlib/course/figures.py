@@ -164,16 +164,21 @@ def _gimbal_lock_seen() -> Figure:
 def _conventions_compared() -> Figure:
     import matplotlib.pyplot as plt
 
+    # The same yaw and pitch drawn in two body frames: z up with y left (Rose), and the
+    # aerospace NED body frame, z down with y right, whose axes point along x, −y, −z of the
+    # picture. A positive pitch lowers the nose in the first and raises it in the second.
+    R = euler_to_matrix((20.0, 30.0, 0.0), "ZYX", degrees=True)
+    ned = np.diag([1.0, -1.0, -1.0])
     fig = plt.figure(figsize=(7, 3.8))
     panels = (
-        ("ZYX", (30.0, -20.0, 10.0), "z", "Rose: ZYX, z up\nyaw 30°, pitch −20°, roll 10°"),
-        ("YZX", (30.0, 20.0, 10.0), "y", "Baker: YZX, y up\nheading 30°, attitude 20°, bank 10°"),
+        (np.eye(3), "Rose, z up: yaw 20°, pitch 30°\nthe nose goes down"),
+        (ned, "aerospace, z down (NED): the same\nangles, the nose goes up"),
     )
-    for position, (seq, angles, up, title) in enumerate(panels, start=1):
-        R = euler_to_matrix(angles, seq, degrees=True)
+    for position, (axes, title) in enumerate(panels, start=1):
         ax = new_3d_axes(fig, (1, 2, position), title=title)
-        draw_frame(ax, None, linestyle="--", alpha=0.45, linewidth=1.2)
-        draw_aircraft(ax, R, up=up)
+        draw_frame(ax, axes, linestyle="--", alpha=0.45, linewidth=1.2)
+        draw_aircraft(ax, axes @ R @ axes.T, up="z")
+        ax.view_init(elev=10, azim=-75)
     return fig
 
 
@@ -224,9 +229,9 @@ THUMBNAILS: dict[str, Callable[[], Figure]] = {
     "05_combining_rotations.png": _combining_rotations,
     "06_rotating_points_and_objects.png": _rotating_points_and_objects,
     "07_order_matters.png": _order_matters,
-    "08_gimbal_lock_seen.png": _gimbal_lock_seen,
-    "09_conventions_compared.png": _conventions_compared,
-    "10_numerical_robustness.png": _numerical_robustness,
+    "07_gimbal_lock_seen.png": _gimbal_lock_seen,
+    "08_conventions_compared.png": _conventions_compared,
+    "09_numerical_robustness.png": _numerical_robustness,
 }
 
 #: Every file :func:`write_figures` writes, in the order it writes them.
