@@ -71,8 +71,8 @@ SAME_RENDERER = (matplotlib.__version__, PIL.__version__) == (
     _pinned("pillow"),
 )
 SAME_DRAWING = _feature_release(matplotlib.__version__) == _feature_release(_pinned("matplotlib"))
-#: One thumbnail per course notebook, named after it (the notebooks decide, not a list here).
-NOTEBOOK_TOPICS = [path.stem for path in sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))]
+#: One thumbnail per course notebook, named after it.
+NOTEBOOK_TOPICS = sorted(path.stem for path in (ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 PNG_NAMES = [f"{topic}.png" for topic in NOTEBOOK_TOPICS]
 
 
