@@ -8,12 +8,15 @@ A :class:`Convention` records all of that, and every function of eulerlib that t
 
 The presets
 -----------
-``"rose"`` (aliases ``"aerospace"``, ``"nasa"``)
+``"rose"``
     D. Rose (2015), Part 2: yaw ``w`` about z, then pitch ``v`` about the new y, then roll ``u``
     about the newest x: ``R = R_z(w) R_y(v) R_x(u)`` (eq 2), ``seq="ZYX"``, angles
-    ``(yaw, pitch, roll)``; yaw is set to 0 at lock (eq 4). Rose draws z up. The aerospace
-    "3-2-1" sequence is the same formula in a body frame whose z points *down*
-    (north-east-down), which changes what a positive pitch looks like but not the algebra.
+    ``(yaw, pitch, roll)``; yaw is set to 0 at lock (eq 4). Rose draws z up (x forward, y left).
+``"aerospace"`` (alias ``"nasa"``)
+    The aerospace "3-2-1" sequence: the same formula and lock policy as Rose's, in the body frame
+    of an aircraft, x forward, y right, z *down* (north-east-down). Only the frame differs, and
+    with it what a positive angle looks like: a positive pitch raises the nose (it lowers it in
+    Rose's z-up frame), a positive yaw turns it right. ``up_axis`` is ``"-z"``.
 ``"baker"``
     M. J. Baker, "Maths - Conversion Matrix to Euler": heading about y, then attitude about the
     new z, then bank about the newest x: ``R = R_y(h) R_z(a) R_x(b)``, ``seq="YZX"``, angles
@@ -46,8 +49,8 @@ Examples
 'YZX'
 >>> get_convention("xyz").lock_zeroes      # the last written angle, the intrinsic first
 'third'
->>> get_convention("aerospace").angle_names
-('yaw', 'pitch', 'roll')
+>>> get_convention("nasa").up_axis      # the aerospace body frame: z points down
+'-z'
 """
 
 from __future__ import annotations
@@ -81,8 +84,9 @@ class Convention(NamedTuple):
     angle_names : tuple of str
         Names of the three angles in argument order, for example ``("yaw", "pitch", "roll")``.
     up_axis : str or None
-        The axis that points up in the convention's frame (``"z"`` or ``"y"``), or None when
-        the convention does not say (a bare sequence).
+        The axis that points up in the convention's frame: ``"z"``, ``"y"``, or ``"-z"`` when z
+        points down (x is forward in all three); None when the convention does not say (a bare
+        sequence).
     description : str
         One sentence saying where the convention comes from and what it means.
     lock_zeroes : {'first', 'third'}
@@ -134,6 +138,16 @@ _ROSE = Convention(
     "R = Rz(yaw) Ry(pitch) Rx(roll), z up; yaw set to 0 at gimbal lock (eq 4)",
     "first",
 )
+_AEROSPACE = Convention(
+    "aerospace",
+    "ZYX",
+    ("yaw", "pitch", "roll"),
+    "-z",
+    "aerospace 3-2-1 in the aircraft's body frame (x forward, y right, z down, NED): yaw about "
+    "z, pitch about the new y, roll about the newest x; R = Rz(yaw) Ry(pitch) Rx(roll); "
+    "yaw set to 0 at gimbal lock",
+    "first",
+)
 _BAKER = Convention(
     "baker",
     "YZX",
@@ -154,10 +168,15 @@ _ROS = Convention(
 )
 
 #: Other names accepted for a preset.
-PRESET_ALIASES = {"aerospace": "rose", "nasa": "rose"}
+PRESET_ALIASES = {"nasa": "aerospace"}
 
 #: Preset name → :class:`Convention`. Aliases map to the same object as the preset they name.
-CONVENTIONS: dict[str, Convention] = {"rose": _ROSE, "baker": _BAKER, "ros": _ROS}
+CONVENTIONS: dict[str, Convention] = {
+    "rose": _ROSE,
+    "aerospace": _AEROSPACE,
+    "baker": _BAKER,
+    "ros": _ROS,
+}
 CONVENTIONS.update({alias: CONVENTIONS[target] for alias, target in PRESET_ALIASES.items()})
 
 _AXIS_LETTERS = "xyz"
@@ -198,8 +217,10 @@ def _checked(convention: Convention, name: str) -> Convention:
             f"{name}.lock_zeroes must be 'first' or 'third' (the angle set to 0 at gimbal "
             f"lock), got {convention.lock_zeroes!r}"
         )
-    if convention.up_axis not in (None, "y", "z"):
-        raise ValueError(f"{name}.up_axis must be 'y', 'z' or None, got {convention.up_axis!r}")
+    if convention.up_axis not in (None, "y", "z", "-z"):
+        raise ValueError(
+            f"{name}.up_axis must be 'y', 'z', '-z' or None, got {convention.up_axis!r}"
+        )
     return convention
 
 

@@ -7,7 +7,7 @@ Two ways in:
 * a rotation matrix (``--matrix`` with nine numbers, or ``--matrix-file``): the command prints
   its angles in each ``--to`` convention.
 
-A convention is a preset name (``rose``, ``baker``, ``ros``, ``aerospace``, ``nasa``; any letter
+A convention is a preset name (``rose``, ``aerospace``, ``nasa``, ``baker``, ``ros``; any letter
 case) or one of SciPy's 24 axis sequences (``ZYX``, ``xyz``, ``ZXZ``, …; uppercase intrinsic,
 lowercase extrinsic), see :mod:`eulerlib.conventions`. Gimbal lock is reported in words, with
 the angle that was set to 0; it is not an error.
@@ -38,7 +38,8 @@ angles. Gimbal lock is reported in words, with the angle that was set to 0."""
 EPILOG = """\
 conventions:
   a preset name (any letter case):
-    rose, aerospace, nasa  ZYX  yaw, pitch, roll         Rose (2015), z up
+    rose                   ZYX  yaw, pitch, roll         Rose (2015), z up
+    aerospace, nasa        ZYX  yaw, pitch, roll         aircraft body frame, z down (NED)
     baker                  YZX  heading, attitude, bank  Baker, y up, bank = 0 at the poles
     ros                    xyz  roll, pitch, yaw         ROS, fixed axes x, y, z, z up
   or an axis sequence as in SciPy: uppercase = intrinsic (moving axes), lowercase =

@@ -1,6 +1,8 @@
-"""Up axes: the same physical rotation written in a y-up frame (Baker) or a z-up frame (Rose, ROS).
+"""Up axes: the same physical rotation written in frames whose up axis differs.
 
-Rose's frame has z up, Baker's has y up; in both, x points forward (the nose). Going from
+Three frames, all right-handed with x forward (the nose): Rose's and ROS's z-up frame (y left,
+z up), Baker's y-up frame (y up, z right), and the aerospace body frame with z *down* (y right,
+z down; north-east-down), written ``"-z"``. Going from
 Baker's axes (x forward, y up, z right) to z-up axes (x forward, y left, z up) is the rotation
 ``P = R_x(+90°)``: it keeps x and sends y to z and z to −y. A rotation ``R`` written in
 Baker's coordinates is ``P R Pᵀ`` in z-up coordinates (:func:`change_up_axis`). Under this
@@ -8,7 +10,10 @@ relabelling heading becomes yaw, bank becomes roll, and attitude becomes *minus*
 positive attitude lifts the nose, Rose's positive pitch (right-handed about y, which points
 left) lowers it.
 
-``P`` is a signed permutation, so ``P R Pᵀ`` only moves and negates entries:
+``P`` is a signed permutation, so Going from the aerospace frame to z up is ``R_x(180°)``: x stays, y and z change sign; a
+rotation's yaw and pitch change sign with them and its roll stays.
+
+Every ``P`` here is a signed permutation, so ``P R Pᵀ`` only moves and negates entries:
 ``(P R Pᵀ)[a, b] = s_a s_b R[p(a), p(b)]``. It is computed that way, block by block.
 """
 
@@ -22,38 +27,44 @@ from eulerlib._validation import ROTATION_ATOL, as_rotations, check_choice, rota
 
 __all__ = ["change_up_axis", "up_axis_matrix"]
 
-UP_AXES = ("y", "z")
-#: Matrix taking y-up coordinates (x forward, y up, z right) to z-up coordinates
-#: (x forward, y left, z up): R_x(+90°).
-_Y_UP_TO_Z_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
+UP_AXES = ("y", "z", "-z")
+#: For each frame, the matrix taking its coordinates to z-up coordinates (x forward, y left,
+#: z up): from y up (x forward, y up, z right) it is R_x(+90°), from z down (x forward, y right,
+#: z down) R_x(180°).
+_TO_Z_UP = {
+    "z": np.eye(3),
+    "y": np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]]),
+    "-z": np.diag([1.0, -1.0, -1.0]),
+}
 
 
 def up_axis_matrix(from_up: str = "y", to_up: str = "z") -> NDArray[np.float64]:
     """The rotation that relabels coordinates from a ``from_up`` frame to a ``to_up`` frame.
 
-    Both frames are right-handed with x forward. The y-up frame is Baker's (x forward, y up,
-    z right); the z-up frame is Rose's and ROS's (x forward, y left, z up). The matrix ``P``
-    returned turns coordinates of a vector in the first frame into coordinates of the same
-    vector in the second: ``v_to = P @ v_from``.
+    All frames are right-handed with x forward. The y-up frame is Baker's (x forward, y up,
+    z right); the z-up frame is Rose's and ROS's (x forward, y left, z up); the ``"-z"`` frame is
+    the aerospace body frame (x forward, y right, z down). The matrix ``P`` returned turns
+    coordinates of a vector in the first frame into coordinates of the same vector in the
+    second: ``v_to = P @ v_from``.
 
     Parameters
     ----------
-    from_up, to_up : {"y", "z"}
+    from_up, to_up : {"y", "z", "-z"}
         Up axis of the frame the coordinates are in, and of the frame they should be in (any
-        letter case).
+        letter case; ``"-z"`` means z points down).
 
     Returns
     -------
     ndarray, shape (3, 3)
-        ``R_x(+90°)`` for y-up to z-up, its transpose ``R_x(−90°)`` for z-up to y-up, the
-        identity when the frames agree. Always a proper rotation (determinant +1): no axis is
-        mirrored, unlike swapping two axes, which would turn a right-handed frame into a
-        left-handed one.
+        ``R_x(+90°)`` for y-up to z-up, ``R_x(180°)`` for z-down to z-up, products of these for
+        the other pairs, the identity when the frames agree. Always a proper rotation
+        (determinant +1): no axis is mirrored, unlike swapping two axes, which would turn a
+        right-handed frame into a left-handed one.
 
     Raises
     ------
     TypeError, ValueError
-        If an up axis is not ``"y"`` or ``"z"``.
+        If an up axis is not ``"y"``, ``"z"`` or ``"-z"``.
 
     Examples
     --------
@@ -62,13 +73,13 @@ def up_axis_matrix(from_up: str = "y", to_up: str = "z") -> NDArray[np.float64]:
     array([0., 0., 1.])
     >>> P @ [0.0, 0.0, 1.0]     # Baker's right is −y (y points left in the z-up frame)
     array([ 0., -1.,  0.])
+    >>> up_axis_matrix("-z", "z") @ [0.0, 1.0, 0.0]   # the aerospace right wing points to −y
+    array([ 0., -1.,  0.])
     """
     source = check_choice(from_up, "from_up", UP_AXES)
     target = check_choice(to_up, "to_up", UP_AXES)
-    matrix: NDArray[np.float64] = np.eye(3)
-    if source != target:
-        matrix = _Y_UP_TO_Z_UP.copy() if source == "y" else _Y_UP_TO_Z_UP.T.copy()
-    return matrix
+    matrix: NDArray[np.float64] = _TO_Z_UP[target].T @ _TO_Z_UP[source]
+    return matrix + 0.0  # no negative zeros
 
 
 def relabel_into(
@@ -97,7 +108,7 @@ def change_up_axis(
     ----------
     R : array_like, shape (..., 3, 3)
         Rotation matrices in coordinates of the ``from_up`` frame.
-    from_up, to_up : {"y", "z"}
+    from_up, to_up : {"y", "z", "-z"}
         Up axes of the two frames (see :func:`up_axis_matrix` for the frames).
     validate, repair, atol
         As in :func:`eulerlib.matrix_to_euler`.
@@ -112,8 +123,8 @@ def change_up_axis(
     Raises
     ------
     TypeError, ValueError
-        If ``R`` is not an array of rotation matrices, an up axis is not ``"y"``/``"z"``, or a
-        keyword is invalid.
+        If ``R`` is not an array of rotation matrices, an up axis is not ``"y"``, ``"z"`` or
+        ``"-z"``, or a keyword is invalid.
 
     Notes
     -----

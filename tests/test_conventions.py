@@ -53,6 +53,23 @@ def quiet_lock() -> Iterator[None]:
 # --- the presets ------------------------------------------------------------------------------
 
 
+@given(angle_triples)
+@settings(max_examples=60, deadline=None)
+def test_aerospace_to_rose_relabelled_flips_yaw_and_pitch(
+    angles: tuple[float, float, float],
+) -> None:
+    """NED body axes (x forward, y right, z down) and z-up axes differ by a half turn about x."""
+    ned = scipy_matrix("ZYX", list(angles))
+    flip = np.diag([1.0, -1.0, -1.0])  # typed in: y and z change sign
+    expected = Rotation.from_matrix(flip @ ned @ flip.T).as_euler("ZYX", degrees=True)
+    got = convert_angles(list(angles), "aerospace", "rose", degrees=True, relabel=True)
+    assert_allclose(
+        angles_to_matrix(got, "ZYX", degrees=True), scipy_matrix("ZYX", expected), atol=1e-12
+    )
+    yaw, pitch, roll = angles
+    assert_allclose(got, [-yaw, -pitch, roll], atol=1e-9)
+
+
 def test_preset_fields() -> None:
     rose, baker, ros = CONVENTIONS["rose"], CONVENTIONS["baker"], CONVENTIONS["ros"]
     assert (rose.seq, rose.angle_names, rose.up_axis) == ("ZYX", ("yaw", "pitch", "roll"), "z")
@@ -62,8 +79,13 @@ def test_preset_fields() -> None:
         "y",
     )
     assert (ros.seq, ros.angle_names, ros.up_axis) == ("xyz", ("roll", "pitch", "yaw"), "z")
-    assert CONVENTIONS["aerospace"] is rose
-    assert CONVENTIONS["nasa"] is rose
+    aerospace = CONVENTIONS["aerospace"]
+    assert CONVENTIONS["nasa"] is aerospace
+    assert (aerospace.seq, aerospace.angle_names, aerospace.up_axis) == (
+        "ZYX",
+        ("yaw", "pitch", "roll"),
+        "-z",
+    )
     for convention in CONVENTIONS.values():
         assert convention.description
 
