@@ -205,9 +205,11 @@ class AnglesJudge(Judge):
 
     Any triple that gives the reference rotation is right (angles modulo a turn, the other
     branch of eq 3, any split of the free outer angle at lock) unless a :class:`Constraint` of the
-    question fails. Wrong answers are checked for the typical mistakes, in this order: the other
-    unit, the reversed order, the intrinsic/extrinsic swap, one angle with the wrong sign, one
-    angle off by 180° (``atan`` for ``atan2``), then the exercise's own :class:`Mistake` list.
+    question fails. Wrong answers are checked first against the exercise's own :class:`Mistake`
+    list (an answer that gives the same rotation as a mistake's angles gets its message), then
+    for the typical mistakes, in this order: the other unit, the reversed order, the
+    intrinsic/extrinsic swap, one angle with the wrong sign, one angle off by 180° (``atan`` for
+    ``atan2``).
     """
 
     reference: ArrayLike
@@ -245,12 +247,14 @@ class AnglesJudge(Judge):
                 if not constraint.holds(value):
                     return off(f"these angles give the right rotation, but {constraint.message}")
             return correct("these angles give the rotation asked for")
+        got = self._matrix(value)
+        for mistake in self.mistakes:
+            # the exercise's own mistakes first: the learner's rotation is the mistake's
+            if _close(got, self._matrix(np.asarray(mistake.value, dtype=np.float64)), self.tol):
+                return off(mistake.message)
         half = 180.0 if self.degrees else math.pi
         # (angles, sequence, in degrees, what it means if they give the target rotation)
-        candidates: list[tuple[NDArray[np.float64], str, bool, str]] = [
-            (np.asarray(m.value, dtype=np.float64), seq, self.degrees, m.message)
-            for m in self.mistakes
-        ]
+        candidates: list[tuple[NDArray[np.float64], str, bool, str]] = []
         said, asked = ("radians", "degrees") if self.degrees else ("degrees", "radians")
         candidates.append(
             (value, seq, not self.degrees, f"these look like {said}; the question asks for {asked}")
@@ -296,7 +300,6 @@ class AnglesJudge(Judge):
         for angles, candidate_seq, degrees, message in candidates:
             if _close(self._matrix(angles, seq=candidate_seq, degrees=degrees), target, self.tol):
                 return off(message)
-        got = self._matrix(value)
         cosine = float(np.clip(got[:, 0] @ target[:, 0], -1.0, 1.0))
         return off(
             "these angles give another rotation: with them the body's x axis points "
