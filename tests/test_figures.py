@@ -74,10 +74,10 @@ SAME_DRAWING = _feature_release(matplotlib.__version__) == _feature_release(_pin
 NOTEBOOK_TOPICS = [
     "01_conventions_and_elementary_rotations",
     "02_deriving_equation_2",
-    "03_matrix_to_angles",
-    "04_gimbal_lock_algebra",
+    "04_rotating_points_and_objects",
+    "05_matrix_to_angles",
     "05_combining_rotations",
-    "06_rotating_points_and_objects",
+    "06_gimbal_lock_algebra",
     "07_order_matters",
     "08_gimbal_lock_seen",
     "09_conventions_compared",
