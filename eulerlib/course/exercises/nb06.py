@@ -68,6 +68,12 @@ EXERCISES = [
                     "atan2(r12, r13)",
                 ),
                 Mistake(
+                    [0.0, 90.0, -_ROLL_MINUS_YAW],
+                    "these angles give roll − yaw with the wrong sign: at pitch +90° eq 4b gives "
+                    "roll − yaw = atan2(r12, r13) (r12 = sin(roll − yaw), r13 = cos(roll − yaw)); "
+                    "with Rose's choice, yaw = 0, the roll is that angle",
+                ),
+                Mistake(
                     [0.0, 90.0, 90.0 - _ROLL_MINUS_YAW],
                     "the arguments of atan2 are swapped: atan2(y, x) takes the sine entry first, "
                     "and r12 = sin(roll − yaw)",
@@ -87,6 +93,8 @@ EXERCISES = [
             Example("[0, 90, np.degrees(np.arctan2(-R_ex[0, 1], -R_ex[0, 2]))]", "off", "eq 4a"),
             Example("[0, 90, np.degrees(np.arctan2(R_ex[0, 2], R_ex[0, 1]))]", "off", "swapped"),
             Example("[0, -90, -40]", "off", "pitch has the wrong sign"),
+            Example("[0, 90, 40]", "off", "roll − yaw with the wrong sign"),
+            Example("[-40, 90, 0]", "off", "roll − yaw with the wrong sign"),
             Example("np.radians([0, 90, -40])", "off", "radians"),
         ),
         forbidden=("-40", "320"),
@@ -131,6 +139,17 @@ EXERCISES = [
                     "so that the heading rate is 1",
                 ),
                 Mistake(
+                    [np.sqrt(0.5), 0.0, -np.sqrt(0.5)],
+                    "that is the right direction, with length 1; the question asks for it scaled "
+                    "so that the heading rate is 1 (divide by the first component)",
+                ),
+                Mistake(
+                    [-np.sqrt(0.5), 0.0, np.sqrt(0.5)],
+                    "that is the right direction, with length 1 and the other sign; the question "
+                    "asks for it scaled so that the heading rate is 1 (divide by the first "
+                    "component)",
+                ),
+                Mistake(
                     [1.0, 0.0, 1.0],
                     "these keep heading − bank fixed, the combination of the south pole; at the "
                     "north pole (attitude +90°) the matrix depends on heading + bank",
@@ -147,6 +166,12 @@ EXERCISES = [
             Example("[1, 0, -1]", "correct"),
             Example("[-1, 0, 1]", "off", "scaled"),
             Example("[1, 0, 1]", "off", "south pole"),
+            Example(  # the null direction as numpy's SVD gives it: unit length, either sign
+                "np.linalg.svd(np.array(angular_velocity_jacobian((0.2, sp.pi / 2, 0.3), 'baker'),"
+                " dtype=float))[2][-1]",
+                "off",
+                "length 1",
+            ),
             Example("[1, 0, 0]", "off", "only together"),
             Example("[1, 1, -1]", "off", "length"),
         ),
