@@ -91,6 +91,10 @@ EXERCISES = [
                     "the second triple turns both outer angles by 180°: yaw and roll",
                 ),
                 Mistake(
+                    [_YPR[0], 180 - _YPR[1], _wrapped(_YPR[2] + 180)],
+                    "the second triple turns both outer angles by 180°: yaw and roll",
+                ),
+                Mistake(
                     [_YPR[0], 180 - _YPR[1], _YPR[2]],
                     "180° − pitch alone flips the common factor cos(pitch); yaw and roll must "
                     "each turn by 180° to flip it back",
@@ -111,6 +115,7 @@ EXERCISES = [
             Example("[-100, 35, 160]", "off", "pitch outside"),
             Example("[80, -145, -20]", "off", "pitch has the wrong sign"),
             Example("[80, 145, 160]", "off", "both outer angles"),
+            Example("[260, 145, 340]", "off", "both outer angles"),
             Example("[-100, 145, 160]", "off", "each turn by 180°"),
         ),
         forbidden=("80, 145", "145"),
