@@ -164,6 +164,24 @@ def test_angle_mistakes_are_diagnosed(answer, words) -> None:
     assert words in result.message
 
 
+def test_an_exercises_own_angle_mistake_is_recognised_by_its_rotation() -> None:
+    # atan for both outer angles: yaw and roll each off by 180°, which no one-angle check sees
+    atan_both = [80.0, 35.0, -20.0]
+    judge = AnglesJudge(
+        [-100.0, 35.0, 160.0],
+        "rose",
+        mistakes=(Mistake(atan_both, "yaw and roll are both off by 180°"),),
+    )
+    assert judge.judge(atan_both).message == "yaw and roll are both off by 180°"
+    same_mistake = [-280.0, 35.0, 340.0]  # written with other turns
+    assert np.allclose(scipy_matrix("ZYX", same_mistake), scipy_matrix("ZYX", atan_both))
+    assert judge.judge(same_mistake).message == "yaw and roll are both off by 180°"
+    # other wrong answers keep their own diagnosis, and right ones pass
+    assert "pitch has the wrong sign" in judge.judge([-100, -35, 160]).message
+    assert "another rotation" in judge.judge([10, 20, 30]).message
+    assert judge.judge([80, 145, -20]).status == "correct"
+
+
 def test_intrinsic_read_as_extrinsic_is_diagnosed() -> None:
     angles = [30.0, 20.0, 10.0]
     extrinsic = Rotation.from_matrix(scipy_matrix("ZYX", angles)).as_euler("zyx", degrees=True)
@@ -289,7 +307,15 @@ def test_feedback_reads_as_a_sentence() -> None:
 
 
 def test_given_returns_a_fresh_copy() -> None:
+    # An exercise's data is one array or a tuple of arrays; a learner who changes them in place
+    # must not change what the next call of given (or the check) sees.
     with_data = [key for key, ex in exercises().items() if ex.given is not None]
-    first = given(with_data[0])
-    first[...] = 0
-    assert np.any(given(with_data[0]) != 0)
+    assert with_data
+    for key in with_data:
+        first = given(key)
+        for array in first if isinstance(first, tuple) else (first,):
+            array[...] = 0
+        again = given(key)
+        assert all(
+            np.any(array != 0) for array in (again if isinstance(again, tuple) else (again,))
+        )

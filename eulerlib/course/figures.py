@@ -33,11 +33,11 @@ import numpy as np
 from eulerlib.elementary import elementary_rotation, rot_x, rot_z
 from eulerlib.euler import euler_to_matrix, matrix_to_euler
 from eulerlib.plotting import (
+    aircraft_segments,
     animate_gimbal_lock,
     draw_aircraft,
     draw_frame,
     new_3d_axes,
-    plot_body_rotation,
     plot_frames,
     plot_gimbal,
     plot_sequence_steps,
@@ -133,7 +133,27 @@ def _combining_rotations() -> Figure:
 
 
 def _rotating_points_and_objects() -> Figure:
-    return plot_body_rotation(euler_to_matrix(_ANGLES, "ZYX", degrees=True), figsize=(9, 3.4))
+    import matplotlib.pyplot as plt
+
+    segments = aircraft_segments()
+    turn = rot_z(90.0, degrees=True)
+    marked = (((1.0, 0.0, 0.0), "tab:red", "nose"), ((-0.1, 0.9, 0.0), "tab:green", "wing tip"))
+    fig, axes = plt.subplots(1, 2, figsize=(7, 3.6), layout="constrained")
+    for ax, R, title in zip(
+        axes, (np.eye(3), turn), ("before", "after p₁ = R p₀, a yaw of 90°"), strict=True
+    ):
+        for start, end in segments @ R.T:
+            ax.plot([start[0], end[0]], [start[1], end[1]], color="0.25", linewidth=1.5)
+        for point, color, label in marked:
+            x, y, _ = R @ np.array(point)
+            ax.plot(x, y, "o", color=color, label=label)
+        ax.set(xlabel="x", xlim=(-1.2, 1.2), ylim=(-1.2, 1.2))
+        ax.set_title(title, fontsize=10)
+        ax.set_aspect("equal")
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("y")
+    axes[0].legend(loc="upper right", fontsize=8)
+    return fig
 
 
 def _order_matters() -> Figure:
@@ -224,10 +244,10 @@ def _frame_zyx() -> Figure:
 THUMBNAILS: dict[str, Callable[[], Figure]] = {
     "01_conventions_and_elementary_rotations.png": _elementary_rotations,
     "02_deriving_equation_2.png": _deriving_equation_2,
-    "03_matrix_to_angles.png": _matrix_to_angles,
-    "04_gimbal_lock_algebra.png": _gimbal_lock_algebra,
+    "04_rotating_points_and_objects.png": _rotating_points_and_objects,
+    "05_matrix_to_angles.png": _matrix_to_angles,
     "05_combining_rotations.png": _combining_rotations,
-    "06_rotating_points_and_objects.png": _rotating_points_and_objects,
+    "06_gimbal_lock_algebra.png": _gimbal_lock_algebra,
     "07_order_matters.png": _order_matters,
     "07_gimbal_lock_seen.png": _gimbal_lock_seen,
     "08_conventions_compared.png": _conventions_compared,

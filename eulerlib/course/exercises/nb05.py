@@ -1,4 +1,9 @@
-"""Answer key of notebook 05, from the matrix back to the angles (Rose eq 3, Baker's formulas)."""
+"""Answer key of notebook 05, from the matrix back to the angles (Rose eq 3, Baker's formulas).
+
+The course states one range for the angles and uses it everywhere: yaw and roll (the outer
+angles) in (−180°, 180°], pitch (the middle angle) in [−90°, 90°]. Answers equal up to whole
+turns give the same rotation and pass, unless the question says otherwise.
+"""
 
 from __future__ import annotations
 
@@ -8,17 +13,32 @@ from .judges import AnglesJudge, Constraint, Mistake
 from .key import Example, Exercise
 
 _YPR = [-100.0, 35.0, 160.0]  # yaw, pitch, roll of the matrix the learner is given
+_XYZ = [50.0, -25.0, 110.0]  # α, β, γ of the "XYZ" matrix of 05.3
 
 
 def _wrapped(angle: float) -> float:
-    return (angle + 180.0) % 360.0 - 180.0
+    """``angle`` in degrees, brought into (−180°, 180°] by whole turns."""
+    return 180.0 - (180.0 - angle) % 360.0
 
+
+_ATAN = "atan(y/x) cannot tell (x, y) from (−x, −y); use atan2(y, x), which keeps the quadrant"
 
 EXERCISES = [
     Exercise(
         id="05.1",
         level="apply",
-        judge=AnglesJudge(_YPR, "rose", degrees=True, what="your yaw, pitch, roll"),
+        judge=AnglesJudge(
+            _YPR,
+            "rose",
+            degrees=True,
+            what="your yaw, pitch, roll",
+            mistakes=(
+                Mistake(
+                    [_wrapped(_YPR[0] + 180), _YPR[1], _wrapped(_YPR[2] + 180)],
+                    f"yaw and roll are both off by 180°: {_ATAN}",
+                ),
+            ),
+        ),
         given=lambda: euler_to_matrix(_YPR, "rose", degrees=True),
         examples=(
             Example(
@@ -27,6 +47,13 @@ EXERCISES = [
                 "correct",
             ),
             Example("[260, 35, -200]", "correct", "rotation asked for"),
+            Example("matrix_to_euler(R_ex, 'rose', degrees=True)", "correct"),
+            Example(
+                "np.degrees([np.arctan(R_ex[1, 0] / R_ex[0, 0]), -np.arcsin(R_ex[2, 0]),"
+                " np.arctan(R_ex[2, 1] / R_ex[2, 2])])",
+                "off",
+                "both off by 180°: atan(y/x)",
+            ),
             Example(
                 "np.degrees([np.arctan(R_ex[1, 0] / R_ex[0, 0]), -np.arcsin(R_ex[2, 0]),"
                 " np.arctan2(R_ex[2, 1], R_ex[2, 2])])",
@@ -40,7 +67,12 @@ EXERCISES = [
                 "radians",
             ),
             Example("[160, 35, -100]", "off", "reverse order"),
-            Example("[-100, -35, 160]", "off", "pitch has the wrong sign"),
+            Example(
+                "np.degrees([np.arctan2(R_ex[1, 0], R_ex[0, 0]), np.arcsin(R_ex[2, 0]),"
+                " np.arctan2(R_ex[2, 1], R_ex[2, 2])])",
+                "off",
+                "pitch has the wrong sign",
+            ),
             Example("'-100, 35, 160'", "off", "text"),
         ),
         forbidden=("-100", "160"),
@@ -58,6 +90,15 @@ EXERCISES = [
                     [_wrapped(_YPR[0] + 180), 180 - _YPR[1], _YPR[2]],
                     "the second triple turns both outer angles by 180°: yaw and roll",
                 ),
+                Mistake(
+                    [_YPR[0], 180 - _YPR[1], _wrapped(_YPR[2] + 180)],
+                    "the second triple turns both outer angles by 180°: yaw and roll",
+                ),
+                Mistake(
+                    [_YPR[0], 180 - _YPR[1], _YPR[2]],
+                    "180° − pitch alone flips the common factor cos(pitch); yaw and roll must "
+                    "each turn by 180° to flip it back",
+                ),
             ),
             constraints=(
                 Constraint(
@@ -74,6 +115,8 @@ EXERCISES = [
             Example("[-100, 35, 160]", "off", "pitch outside"),
             Example("[80, -145, -20]", "off", "pitch has the wrong sign"),
             Example("[80, 145, 160]", "off", "both outer angles"),
+            Example("[260, 145, 340]", "off", "both outer angles"),
+            Example("[-100, 145, 160]", "off", "each turn by 180°"),
         ),
         forbidden=("80, 145", "145"),
     ),
@@ -81,12 +124,19 @@ EXERCISES = [
         id="05.3",
         level="extend",
         judge=AnglesJudge(
-            [50.0, -25.0, 110.0],
+            _XYZ,
             "XYZ",
             degrees=True,
             what="your angles for 'XYZ'",
+            mistakes=(
+                Mistake(
+                    [-_XYZ[0], _XYZ[1], -_XYZ[2]],
+                    "α and γ both have the wrong sign: the sine entries of 'XYZ' carry a minus "
+                    "sign (X[1, 2] = −sin α cos β, X[0, 1] = −sin γ cos β)",
+                ),
+            ),
         ),
-        given=lambda: euler_to_matrix([50.0, -25.0, 110.0], "XYZ", degrees=True),
+        given=lambda: euler_to_matrix(_XYZ, "XYZ", degrees=True),
         examples=(
             Example(
                 "np.degrees([np.arctan2(-M_ex[1, 2], M_ex[2, 2]), np.arcsin(M_ex[0, 2]),"
@@ -94,6 +144,12 @@ EXERCISES = [
                 "correct",
             ),
             Example("[50 - 360, -25, 110]", "correct"),
+            Example(
+                "np.degrees([np.arctan2(M_ex[1, 2], M_ex[2, 2]), np.arcsin(M_ex[0, 2]),"
+                " np.arctan2(M_ex[0, 1], M_ex[0, 0])])",
+                "off",
+                "both have the wrong sign",
+            ),
             Example("[50, -25, 110][::-1]", "off", "reverse order"),
             Example("np.degrees(matrix_to_euler(M_ex, 'xyz'))", "off", "fixed axes (extrinsic)"),
         ),
