@@ -145,4 +145,7 @@ def intrinsic_angles(
         third = third * third_sign
     angles = np.stack([first, middle, third], axis=-1)
     angles += 0.0  # turns every -0.0 into 0.0
+    # atan2 gives −π where a sine came out as −0.0; a half turn is +π, so that the outer angles
+    # lie in (−π, π] as documented
+    angles[angles == -np.pi] = np.pi
     return angles, locked

@@ -174,7 +174,7 @@ def matrix_to_euler(
     Returns
     -------
     ndarray, shape (..., 3)
-        Angle ``i`` goes with letter ``i`` of ``seq``. First and third angles lie in [-π, π];
+        Angle ``i`` goes with letter ``i`` of ``seq``. First and third angles lie in (-π, π];
         the middle angle in [-π/2, π/2] (Tait–Bryan) or [0, π] (proper Euler).
 
     Raises

@@ -157,7 +157,7 @@ def matrix_to_yaw_pitch_roll(
     Returns
     -------
     YawPitchRoll
-        ``(yaw, pitch, roll)``, arrays of the leading shape of ``R``. Yaw and roll in [-π, π],
+        ``(yaw, pitch, roll)``, arrays of the leading shape of ``R``. Yaw and roll in (-π, π],
         pitch in [-π/2, π/2]. At gimbal lock (pitch ±90°) yaw is 0 and roll carries the whole
         turn about the vertical, as Rose chooses: roll = atan2(−r12, −r13) at pitch −90° and
         roll = atan2(r12, r13) at pitch +90° (eq 4a, 4b).
@@ -249,7 +249,7 @@ def matrix_to_heading_attitude_bank(
     -------
     HeadingAttitudeBank
         ``(heading, attitude, bank)``, arrays of the leading shape of ``R``. Heading and bank in
-        [-π, π], attitude in [-π/2, π/2]. At a pole (attitude ±90°) bank is 0 and
+        (-π, π], attitude in [-π/2, π/2]. At a pole (attitude ±90°) bank is 0 and
         heading = atan2(m02, m22) carries the whole turn about the vertical.
 
     Raises

@@ -339,3 +339,19 @@ def test_baker_cut_off_returns_90_for_86_4_degrees():
     assert np.abs(Rotation.from_euler("YZX", naive, degrees=True).as_matrix() - R).max() > 0.05
     heading, attitude, bank = matrix_to_heading_attitude_bank(R, degrees=True)
     assert_allclose([heading, attitude, bank], [20.0, 86.4, -35.0], rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("seq", ALL_SEQUENCES)
+def test_outer_angles_lie_in_the_half_open_range(seq, rng):
+    """Half turns come back as +180°, never −180°: the range is (−180°, 180°]."""
+    grid = np.radians(np.arange(-180.0, 181.0, 15.0))
+    angles = np.array(np.meshgrid(grid, grid, grid)).reshape(3, -1).T
+    R = Rotation.from_euler(seq, angles).as_matrix()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", GimbalLockWarning)
+        got = matrix_to_euler(R, seq)
+        named = matrix_to_yaw_pitch_roll(R[:50])
+    outer = got[:, [0, 2]]
+    assert np.all(outer > -np.pi) and np.all(outer <= np.pi)
+    assert np.any(outer == np.pi)  # the half turns are there, as +π
+    assert np.all(named.yaw > -np.pi) and np.all(named.roll > -np.pi)
