@@ -2,16 +2,16 @@
 
 Three frames, all right-handed with x forward (the nose): Rose's and ROS's z-up frame (y left,
 z up), Baker's y-up frame (y up, z right), and the aerospace body frame with z *down* (y right,
-z down; north-east-down), written ``"-z"``. Going from
-Baker's axes (x forward, y up, z right) to z-up axes (x forward, y left, z up) is the rotation
-``P = R_x(+90°)``: it keeps x and sends y to z and z to −y. A rotation ``R`` written in
-Baker's coordinates is ``P R Pᵀ`` in z-up coordinates (:func:`change_up_axis`). Under this
-relabelling heading becomes yaw, bank becomes roll, and attitude becomes *minus* pitch: Baker's
-positive attitude lifts the nose, Rose's positive pitch (right-handed about y, which points
-left) lowers it.
+z down; north-east-down), written ``"-z"``.
 
-``P`` is a signed permutation, so Going from the aerospace frame to z up is ``R_x(180°)``: x stays, y and z change sign; a
-rotation's yaw and pitch change sign with them and its roll stays.
+Going from Baker's axes to z-up axes is the rotation ``P = R_x(+90°)``: it keeps x and sends y
+to z and z to −y. A rotation ``R`` written in Baker's coordinates is ``P R Pᵀ`` in z-up
+coordinates (:func:`change_up_axis`). Under this relabelling heading becomes yaw, bank becomes
+roll, and attitude becomes *minus* pitch: Baker's positive attitude lifts the nose, Rose's
+positive pitch (right-handed about y, which points left) lowers it.
+
+Going from the aerospace frame to z up is ``P = R_x(180°)``: x stays, y and z change sign; a
+rotation's yaw and pitch change sign with them, and its roll stays.
 
 Every ``P`` here is a signed permutation, so ``P R Pᵀ`` only moves and negates entries:
 ``(P R Pᵀ)[a, b] = s_a s_b R[p(a), p(b)]``. It is computed that way, block by block.
