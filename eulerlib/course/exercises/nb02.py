@@ -119,9 +119,7 @@ EXERCISES = [
         examples=(
             Example("rot_z(90, degrees=True) @ rot_y(30, degrees=True) @ [1, 0, 0]", "correct"),
             Example("[0, np.cos(np.pi / 6), -np.sin(np.pi / 6)]", "correct"),
-            Example(
-                "rot_y(30, degrees=True) @ rot_z(90, degrees=True) @ [1, 0, 0]", "off", "B·A"
-            ),
+            Example("rot_y(30, degrees=True) @ rot_z(90, degrees=True) @ [1, 0, 0]", "off", "B·A"),
             Example(
                 "[0, np.cos(np.radians(30)), np.sin(np.radians(30))]",
                 "off",
@@ -167,13 +165,9 @@ EXERCISES = [
             Example("A_ex @ rot_y(30, degrees=True) @ np.linalg.inv(A_ex)", "correct"),
             Example("rot_y(30, degrees=True)", "off", "fixed y axis"),
             Example("A_ex @ rot_y(30, degrees=True)", "off", "attitude after the pitch"),
-            Example(
-                "A_ex.T @ rot_y(30, degrees=True) @ A_ex", "off", "not about the wing axis"
-            ),
+            Example("A_ex.T @ rot_y(30, degrees=True) @ A_ex", "off", "not about the wing axis"),
             Example("A_ex @ rot_y(30) @ A_ex.T", "off", "radians"),
-            Example(
-                "A_ex @ rot_y(-30, degrees=True) @ A_ex.T", "off", "transpose of the answer"
-            ),
+            Example("A_ex @ rot_y(-30, degrees=True) @ A_ex.T", "off", "transpose of the answer"),
         ),
         forbidden=("A_ex @ pitch_in_body_axes", "A_ex @ rot_y(30"),
     ),
