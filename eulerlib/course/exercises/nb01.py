@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numpy.typing import NDArray
 
 from eulerlib import elementary_rotation, euler_to_matrix
 
@@ -26,7 +27,7 @@ _FRAME_ANGLES = [60.0, 20.0, -35.0]  # yaw, pitch, roll of the frame, degrees (n
 _POINT = [2.0, -1.0, 0.5]  # as the exercise cell writes it
 
 
-def _frame() -> np.ndarray:
+def _frame() -> NDArray[np.float64]:
     return euler_to_matrix(_FRAME_ANGLES, "ZYX", degrees=True)
 
 

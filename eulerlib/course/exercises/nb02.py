@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numpy.typing import NDArray
 
 from eulerlib import elementary_rotation, euler_to_matrix
 
@@ -12,7 +13,7 @@ from .judges import AnglesJudge, ArrayJudge, Mistake
 from .key import Example, Exercise
 
 
-def _turn(axis: str, angle: float, degrees: bool = True) -> np.ndarray:
+def _turn(axis: str, angle: float, degrees: bool = True) -> NDArray[np.float64]:
     return elementary_rotation(axis, angle, degrees=degrees)
 
 
@@ -28,12 +29,13 @@ _NOSE = [0.0, _COS_30, -_SIN_30]
 _ATTITUDE_ANGLES = [40.0, -25.0, 65.0]  # yaw, pitch, roll in degrees
 
 
-def _attitude() -> np.ndarray:
+def _attitude() -> NDArray[np.float64]:
     return euler_to_matrix(_ATTITUDE_ANGLES, "ZYX", degrees=True)
 
 
-def _conjugate(outer: np.ndarray, inner: np.ndarray) -> np.ndarray:
-    return outer @ inner @ outer.T
+def _conjugate(outer: NDArray[np.float64], inner: NDArray[np.float64]) -> NDArray[np.float64]:
+    conjugate: NDArray[np.float64] = outer @ inner @ outer.T
+    return conjugate
 
 
 EXERCISES = [
