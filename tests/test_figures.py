@@ -71,18 +71,8 @@ SAME_RENDERER = (matplotlib.__version__, PIL.__version__) == (
     _pinned("pillow"),
 )
 SAME_DRAWING = _feature_release(matplotlib.__version__) == _feature_release(_pinned("matplotlib"))
-NOTEBOOK_TOPICS = [
-    "01_conventions_and_elementary_rotations",
-    "02_deriving_equation_2",
-    "03_matrix_to_angles",
-    "04_gimbal_lock_algebra",
-    "05_combining_rotations",
-    "06_rotating_points_and_objects",
-    "07_order_matters",
-    "08_gimbal_lock_seen",
-    "09_conventions_compared",
-    "10_numerical_robustness",
-]
+#: One thumbnail per course notebook, named after it.
+NOTEBOOK_TOPICS = sorted(path.stem for path in (ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 PNG_NAMES = [f"{topic}.png" for topic in NOTEBOOK_TOPICS]
 
 
