@@ -72,7 +72,7 @@ def _rotations_in_the_plane_and_about_one_axis() -> Figure:
     for index, color in enumerate(("tab:red", "tab:green")):
         for vector, style in ((np.eye(2)[index], "--"), (turn[:2, index], "-")):
             arrow = {"arrowstyle": "-|>", "color": color, "linewidth": 2, "linestyle": style}
-            plane.annotate("", xy=vector, xytext=(0, 0), arrowprops=arrow)
+            plane.annotate("", xy=(vector[0], vector[1]), xytext=(0, 0), arrowprops=arrow)
     plane.set_xlim(-1.2, 1.2)
     plane.set_ylim(-0.5, 1.3)
     plane.set_aspect("equal")
