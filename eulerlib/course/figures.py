@@ -40,7 +40,6 @@ from eulerlib.plotting import (
     new_3d_axes,
     plot_frames,
     plot_gimbal,
-    plot_sequence_steps,
 )
 
 if TYPE_CHECKING:
@@ -61,19 +60,61 @@ _ANGLES = (30.0, 20.0, 10.0)  # yaw, pitch, roll used across the figures, in deg
 # --------------------------------------------------------------------------- the figures
 
 
-def _elementary_rotations() -> Figure:
+def _rotations_in_the_plane_and_about_one_axis() -> Figure:
     import matplotlib.pyplot as plt
 
-    fig = plt.figure(figsize=(9, 3.4))
-    for axis, letter in enumerate("xyz"):
-        ax = new_3d_axes(fig, (1, 3, axis + 1), title=f"R_{letter}(40°): turn about {letter}")
-        draw_frame(ax, None, linestyle="--", alpha=0.45, linewidth=1.5)
-        draw_frame(ax, elementary_rotation(axis, 40.0, degrees=True), label_suffix="'")
+    turn = elementary_rotation("z", 40.0, degrees=True)
+    letter_f = np.array([[0.0, 0.0], [0.0, 1.0], [0.6, 1.0], [0.0, 1.0], [0.0, 0.55], [0.45, 0.55]])
+    fig = plt.figure(figsize=(7, 3.6))
+    plane = fig.add_subplot(1, 2, 1)
+    plane.plot(*letter_f.T, color="0.65", linewidth=3)
+    plane.plot(*(letter_f @ turn[:2, :2].T).T, color="tab:blue", linewidth=3)
+    for index, color in enumerate(("tab:red", "tab:green")):
+        for vector, style in ((np.eye(2)[index], "--"), (turn[:2, index], "-")):
+            arrow = {"arrowstyle": "-|>", "color": color, "linewidth": 2, "linestyle": style}
+            plane.annotate("", xy=(vector[0], vector[1]), xytext=(0, 0), arrowprops=arrow)
+    plane.set_xlim(-1.2, 1.2)
+    plane.set_ylim(-0.5, 1.3)
+    plane.set_aspect("equal")
+    plane.set_xticks([])
+    plane.set_yticks([])
+    plane.set_title("a turn by 40° in the plane", fontsize=10)
+    ax = new_3d_axes(fig, (1, 2, 2), title="R_z(40°): the same turn about z")
+    draw_frame(ax, None, linestyle="--", alpha=0.45, linewidth=1.5)
+    draw_frame(ax, turn, label_suffix="'")
     return fig
 
 
-def _deriving_equation_2() -> Figure:
-    return plot_sequence_steps(_ANGLES, "ZYX", degrees=True, figsize=(9, 6.2))
+def _composing_rotations() -> Figure:
+    import matplotlib.pyplot as plt
+
+    A, B = rot_z(90.0, degrees=True), rot_x(90.0, degrees=True)
+    fig = plt.figure(figsize=(7, 3.8))
+    panels = (("first A, then B: B·A", B @ A), ("first B, then A: A·B", A @ B))
+    for position, (title, R) in enumerate(panels, start=1):
+        ax = new_3d_axes(fig, (1, 2, position), title=title)
+        draw_frame(ax, None, scale=0.6, linestyle="--", alpha=0.5, linewidth=1.2)
+        draw_aircraft(ax, R)
+        draw_frame(ax, R, alpha=0.8, linewidth=1.5, label_suffix="'")
+    return fig
+
+
+def _euler_angles_rose_and_baker() -> Figure:
+    import matplotlib.pyplot as plt
+
+    steps = (("z", 40.0, "yaw"), ("y", 30.0, "pitch"), ("x", 60.0, "roll"))
+    fig = plt.figure(figsize=(9, 3.4))
+    attitude = np.eye(3)
+    for number, (axis, angle, name) in enumerate(steps, start=1):
+        body_axis = attitude[:, "xyz".index(axis)]
+        turned = attitude @ elementary_rotation(axis, angle, degrees=True)
+        ax = new_3d_axes(fig, (1, 3, number), limit=1.0, title=f"{number}. {name} {angle:g}°")
+        ax.view_init(elev=20, azim=-60)
+        ax.plot(*np.stack([-body_axis, body_axis], axis=1), color="gold", linewidth=5, alpha=0.6)
+        draw_aircraft(ax, attitude, color="0.6", linestyle="--")
+        draw_aircraft(ax, turned)
+        attitude = turned
+    return fig
 
 
 def _matrix_to_angles() -> Figure:
@@ -119,19 +160,6 @@ def _gimbal_lock_algebra() -> Figure:
     return fig
 
 
-def _combining_rotations() -> Figure:
-    import matplotlib.pyplot as plt
-
-    A, B = rot_z(90.0, degrees=True), rot_x(90.0, degrees=True)
-    fig = plt.figure(figsize=(7, 3.6))
-    for position, (name, R) in enumerate((("A·B", A @ B), ("B·A", B @ A)), start=1):
-        title = f"{name}, A = R_z(90°), B = R_x(90°)"
-        ax = new_3d_axes(fig, (1, 2, position), title=title)
-        draw_frame(ax, None, linestyle="--", alpha=0.45, linewidth=1.5)
-        draw_frame(ax, R, label_suffix="'")
-    return fig
-
-
 def _rotating_points_and_objects() -> Figure:
     import matplotlib.pyplot as plt
 
@@ -153,21 +181,6 @@ def _rotating_points_and_objects() -> Figure:
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("y")
     axes[0].legend(loc="upper right", fontsize=8)
-    return fig
-
-
-def _order_matters() -> Figure:
-    import matplotlib.pyplot as plt
-
-    angles = (60.0, 40.0, 30.0)
-    fig = plt.figure(figsize=(7, 3.8))
-    readings = (("ZYX", "moving axes"), ("zyx", "fixed axes"))
-    for position, (seq, reading) in enumerate(readings, start=1):
-        R = euler_to_matrix(angles, seq, degrees=True)
-        ax = new_3d_axes(fig, (1, 2, position), title=f"{seq} (60°, 40°, 30°): {reading}")
-        draw_frame(ax, None, linestyle="--", alpha=0.45, linewidth=1.2)
-        draw_aircraft(ax, R)
-        draw_frame(ax, R, alpha=0.8, linewidth=1.5, label_suffix="'")
     return fig
 
 
@@ -242,13 +255,12 @@ def _frame_zyx() -> Figure:
 
 #: Thumbnail file name → function that draws it, one per notebook.
 THUMBNAILS: dict[str, Callable[[], Figure]] = {
-    "01_conventions_and_elementary_rotations.png": _elementary_rotations,
-    "02_deriving_equation_2.png": _deriving_equation_2,
+    "01_rotations_in_the_plane_and_about_one_axis.png": _rotations_in_the_plane_and_about_one_axis,
+    "02_composing_rotations.png": _composing_rotations,
+    "03_euler_angles_rose_and_baker.png": _euler_angles_rose_and_baker,
     "04_rotating_points_and_objects.png": _rotating_points_and_objects,
     "05_matrix_to_angles.png": _matrix_to_angles,
-    "05_combining_rotations.png": _combining_rotations,
     "06_gimbal_lock_algebra.png": _gimbal_lock_algebra,
-    "07_order_matters.png": _order_matters,
     "07_gimbal_lock_seen.png": _gimbal_lock_seen,
     "08_conventions_compared.png": _conventions_compared,
     "09_numerical_robustness.png": _numerical_robustness,
@@ -285,8 +297,8 @@ def write_figures(out: str | Path = "figures") -> list[Path]:
     --------
     ``write_figures("figures")`` writes these files (a few seconds):
 
-    >>> len(FIGURE_NAMES), FIGURE_NAMES[0], FIGURE_NAMES[-2:]
-    (12, '01_conventions_and_elementary_rotations.png', ('frame_zyx.svg', 'gimbal_lock.gif'))
+    >>> len(FIGURE_NAMES) == len(THUMBNAILS) + 2, FIGURE_NAMES[-2:]
+    (True, ('frame_zyx.svg', 'gimbal_lock.gif'))
     """
     import matplotlib
 

@@ -1,0 +1,165 @@
+"""Answer key of notebook 03, Euler angles: Rose's eq 2, Baker's matrix, the 24 conventions."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from functools import cached_property
+from typing import Any
+
+from .judges import ChoiceJudge, ExpressionJudge, Mistake
+from .key import Example, Exercise
+
+
+class _Later:
+    """A SymPy expression built when a judge first needs it.
+
+    The judges pass references through ``sympify``, which calls ``_sympy_``; so loading the
+    answer key (which ``check`` does for every exercise) does not import SymPy.
+    """
+
+    def __init__(self, build: Callable[[], Any]) -> None:
+        self._build = build
+
+    @cached_property
+    def _value(self) -> Any:
+        return self._build()
+
+    def _sympy_(self) -> Any:
+        return self._value
+
+
+def _product(*turns: tuple[str, str]) -> _Later:
+    """The elementary matrices of ``turns`` (axis, angle symbol) multiplied from left to right.
+
+    The symbols are real, as the exercise cells define them, so that they compare equal.
+    """
+
+    def build() -> Any:
+        import sympy as sp
+
+        from eulerlib.symbolic import elementary_matrix
+
+        result = sp.eye(3)
+        for axis, name in turns:
+            result = result * elementary_matrix(axis, sp.Symbol(name, real=True))
+        return result
+
+    return _Later(build)
+
+
+def _column(matrix: _Later, column: int) -> _Later:
+    return _Later(lambda: matrix._sympy_()[:, column])
+
+
+def _row_as_column(matrix: _Later, row: int) -> _Later:
+    return _Later(lambda: matrix._sympy_()[row, :].T)
+
+
+# 03.1: z-x-z about the moving axes: the matrices in the order of the turns
+_ZXZ = _product(("z", "alpha"), ("x", "beta"), ("z", "gamma"))
+
+# 03.3: Rose's numbers read about the fixed axes, "zyx": R_x(u) R_y(v) R_z(w); the nose is column 1
+_ZYX_FIXED = _product(("x", "u"), ("y", "v"), ("z", "w"))
+
+EXERCISES = [
+    Exercise(
+        id="03.1",
+        level="apply",
+        judge=ExpressionJudge(
+            _ZXZ,
+            what="your z-x-z matrix",
+            mistakes=(
+                Mistake(
+                    _product(("z", "gamma"), ("x", "beta"), ("z", "alpha")),
+                    "your product is in the reverse order of the turns, which is z-x-z about "
+                    "the fixed axes; about the moving axes the matrices stand in the order of the "
+                    "turns",
+                ),
+                Mistake(
+                    _product(("z", "alpha"), ("y", "beta"), ("z", "gamma")),
+                    "your middle turn is about y; the question asks for a turn about the new x",
+                ),
+            ),
+        ),
+        examples=(
+            Example('euler_matrix((alpha, beta, gamma), "ZXZ")', "correct"),
+            Example('euler_matrix((gamma, beta, alpha), "zxz")', "correct"),
+            Example(
+                'elementary_matrix("z", gamma) * elementary_matrix("x", beta)'
+                ' * elementary_matrix("z", alpha)',
+                "off",
+                "reverse order of the turns",
+            ),
+            Example('euler_matrix((alpha, beta, gamma), "ZYZ")', "off", "middle turn is about y"),
+            Example('euler_matrix((alpha, beta, gamma), "ZXZ").T', "off", "transpose"),
+            Example("'Rz Rx Rz'", "off", "is text"),
+        ),
+        forbidden=('euler_matrix((alpha, beta, gamma), "ZXZ")',),
+    ),
+    Exercise(
+        id="03.2",
+        level="predict",
+        judge=ChoiceJudge(
+            options={
+                "a": 'Rotation.from_euler("XYZ", [u, v, w])',
+                "b": 'Rotation.from_euler("xyz", [u, v, w])',
+                "c": 'Rotation.from_euler("zyx", [w, v, u])',
+                "d": 'Rotation.from_euler("ZYX", [u, v, w])',
+            },
+            answer="b",
+            explanations={
+                "b": "right: x, then y, then z about the fixed axes is R_z(w) R_y(v) R_x(u), "
+                "Rose's product read from the right",
+                "a": "'XYZ' turns about the moving axes x, then y, then z: that is "
+                "R_x(u) R_y(v) R_z(w), Rose's product in the reverse order, another rotation",
+                "c": "'zyx' turns about the fixed axes z, then y, then x; each later turn "
+                "multiplies from the left, so that is R_x(u) R_y(v) R_z(w), another rotation",
+                "d": "the letters are Rose's, but angle i goes with letter i: this call reads the "
+                "roll u as the yaw about z and the yaw w as the roll about x",
+            },
+        ),
+        examples=(
+            Example("'b'", "correct"),
+            Example("' B '", "correct", "read from the right"),
+            Example("'a'", "off", "reverse order"),
+            Example("'c'", "off", "fixed axes z, then y, then x"),
+            Example("'d'", "off", "angle i goes with letter i"),
+            Example("2", "off", "give one of the options"),
+        ),
+        forbidden=('answer_2 = "b"', "answer_2 = 'b'"),
+    ),
+    Exercise(
+        id="03.3",
+        level="extend",
+        judge=ExpressionJudge(
+            _column(_ZYX_FIXED, 0),
+            what="your nose direction",
+            mistakes=(
+                Mistake(
+                    _column(_product(("z", "w"), ("y", "v"), ("x", "u")), 0),
+                    "that is the nose of Rose's moving-axes reading 'ZYX', where the roll leaves "
+                    "the nose alone; about the fixed axes each later turn multiplies from the "
+                    "left, so the matrix is R_x(u) R_y(v) R_z(w)",
+                ),
+                Mistake(
+                    _row_as_column(_ZYX_FIXED, 0),
+                    "this is the first row of the matrix written as a column; the nose is where "
+                    "e_x goes, R e_x, which is the first column",
+                ),
+            ),
+        ),
+        examples=(
+            Example('euler_matrix((w, v, u), "zyx")[:, 0]', "correct"),
+            Example(
+                'elementary_matrix("x", u) * elementary_matrix("y", v)'
+                ' * elementary_matrix("z", w) * sp.Matrix([1, 0, 0])',
+                "correct",
+            ),
+            Example('euler_matrix((w, v, u), "ZYX")[:, 0]', "off", "moving-axes reading"),
+            Example('euler_matrix((w, v, u), "zyx")[0, :].T', "off", "first row"),
+            Example('euler_matrix((w, v, u), "zyx")[0, :]', "off", "not a 3×1 matrix"),
+            Example("'cos(v)*cos(w)'", "off", "is text"),
+        ),
+        forbidden=('euler_matrix((w, v, u), "zyx")', "fixed_reading[:, 0]"),
+    ),
+]
