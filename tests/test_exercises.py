@@ -23,6 +23,7 @@ from pathlib import Path
 from typing import Any
 
 import nbformat
+import numpy as np
 import pytest
 
 from eulerlib.course.exercises import ChoiceJudge, Exercise, exercises
@@ -179,7 +180,12 @@ def test_student_copy_diagnoses_every_answer_of_the_test_tables(path: Path) -> N
     copy = student_copy(read(path))
     first = next(cell for cell in copy.cells if cell.cell_type == "code")
     namespace: dict[str, Any] = {}
-    run(without_magics(first.source), namespace)
+    with np.printoptions():  # the notebook's own print options must not leak into other tests
+        run(without_magics(first.source), namespace)
+        check_every_example(path, copy, namespace)
+
+
+def check_every_example(path: Path, copy: Any, namespace: dict[str, Any]) -> None:
     keys = {k.id: k for k in key_of(path)}
     for exercise, solution, check in exercise_cells(copy):
         assert solution is None, f"{path.name}: the student copy kept a solution"

@@ -128,10 +128,12 @@ def test_complex_matrix_is_refused_not_accepted() -> None:
 
 
 def test_vector_diagnoses() -> None:
-    judge = ArrayJudge([0.0, 2.0, 1.0], what="the point")
+    judge = ArrayJudge([0.0, 2.0, 1.0], what="the point", rotation=True)
     assert judge.judge([0, 2, 1]).status == "correct"
     assert "opposite way" in judge.judge([0, -2, -1]).message
     assert "never changes a length" in judge.judge([0, 2, 2]).message
+    rates = ArrayJudge([0.0, 2.0, 1.0], what="the rates")  # not a turned point: no length rule
+    assert "length" not in rates.judge([0, 2, 2]).message
 
 
 # --- angles ----------------------------------------------------------------------------------
@@ -219,8 +221,9 @@ def test_an_exercise_mistake_is_named_when_the_answer_gives_its_rotation() -> No
 
 def test_a_far_rotation_gets_a_geometric_hint_without_the_reference() -> None:
     message = AnglesJudge([10.0, 20.0, 30.0], "ZYX").judge([50, -40, 100]).message
-    assert "points" in message and "°" in message
-    assert "10" not in message.split("points")[0]
+    gap = Rotation.from_euler("ZYX", [[10, 20, 30], [50, -40, 100]], degrees=True)
+    expected = (gap[0].inv() * gap[1]).magnitude() * 180 / np.pi
+    assert f"{expected:.3g}° away" in message
 
 
 # --- quaternions -----------------------------------------------------------------------------

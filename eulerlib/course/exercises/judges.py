@@ -9,8 +9,9 @@ away:
   of eq 3 and the free outer angle at gimbal lock all pass, unless the question states a
   constraint (yaw = 0, a range), which is then enforced and named;
 * quaternions ``q`` and ``−q`` are the same rotation;
-* SymPy answers are simplified before they are judged, and checked numerically at random
-  values when simplification cannot decide;
+* SymPy answers are judged by their value at random values of their symbols, so an answer that
+  differs from the reference only by simplification passes, and a wrong matrix is answered with
+  the one entry that differs;
 * the typical mistakes are recognised: degrees for radians, the transpose (the inverse), the
   reversed order (``AB`` for ``BA``, intrinsic for extrinsic), ``atan`` for ``atan2`` (an angle off
   by 180°), a sign error in one angle, scalar-first for scalar-last, the conjugate;
@@ -140,8 +141,10 @@ class NumberJudge(Judge):
 class ArrayJudge(Judge):
     """A vector or a matrix, compared entry by entry.
 
-    For a rotation matrix (``rotation=True``) a wrong answer is also checked for being the
-    transpose (the inverse rotation), a reflection, or not orthogonal at all.
+    With ``rotation=True`` the answer is a rotation matrix, or a point turned by one: a wrong
+    matrix is also checked for being the transpose (the inverse rotation), a reflection, or not
+    orthogonal at all, and a wrong point for having another length than the answer (a rotation
+    keeps lengths). Any vector is checked for pointing the opposite way.
     """
 
     reference: ArrayLike
@@ -173,8 +176,15 @@ class ArrayJudge(Judge):
             )
         if ref.ndim == 1 and _close(-value, ref, self.tol):
             return off(f"{self.what} points the opposite way: a sign is off")
-        if ref.ndim == 1 and not math.isclose(
-            float(np.linalg.norm(value)), float(np.linalg.norm(ref)), rel_tol=1e-6, abs_tol=self.tol
+        if (
+            self.rotation
+            and ref.ndim == 1
+            and not math.isclose(
+                float(np.linalg.norm(value)),
+                float(np.linalg.norm(ref)),
+                rel_tol=1e-6,
+                abs_tol=self.tol,
+            )
         ):
             return off(
                 f"{self.what} has length {np.linalg.norm(value):.6g}, but the answer has length "
@@ -299,10 +309,12 @@ class AnglesJudge(Judge):
         for angles, candidate_seq, degrees, message in candidates:
             if _close(self._matrix(angles, seq=candidate_seq, degrees=degrees), target, self.tol):
                 return off(message)
-        cosine = float(np.clip(got[:, 0] @ target[:, 0], -1.0, 1.0))
+        from eulerlib import angle_between
+
+        gap = float(angle_between(got, target, degrees=True))
         return off(
-            "these angles give another rotation: with them the body's x axis points "
-            f"{math.degrees(math.acos(cosine)):.3g}° away from where it should"
+            f"these angles give another rotation, {gap:.3g}° away from the one asked for (the "
+            "angle of the turn that takes one attitude to the other)"
         )
 
 
@@ -374,39 +386,51 @@ class QuaternionJudge(Judge):
 # --- SymPy expressions and matrices --------------------------------------------------------------
 
 
-def _numerically_zero(expression: Any, seed: int = 7) -> bool:
-    """True when ``expression`` (a SymPy expression or matrix) vanishes at random real values."""
+def _samples(symbol: Any, rng: np.random.Generator, count: int) -> NDArray[Any]:
+    """Random values a symbol may take, by its assumptions (integer, positive, real)."""
+    if symbol.is_integer:
+        first = 1 if symbol.is_positive else 0 if symbol.is_nonnegative else -5
+        return rng.integers(first, 6, count)
+    low = 0.1 if (symbol.is_positive or symbol.is_nonnegative) else -3.0
+    return rng.uniform(low, 3.0, count)
+
+
+def _vanishes(expression: Any, seed: int = 7) -> bool:
+    """True when ``expression`` (a SymPy expression or matrix) is zero.
+
+    It is evaluated at random values of its symbols: a trigonometric or polynomial expression
+    that is not identically zero is nonzero at almost every point, so seven points decide it
+    without the cost of ``simplify`` (which can take seconds on a 3×3 matrix of products of
+    sines and cosines, and can fail to see an identity that the numbers see at once).
+    """
     import sympy as sp
 
     symbols = sorted(expression.free_symbols, key=str)
+    entries = list(expression) if isinstance(expression, sp.MatrixBase) else [expression]
+    if not symbols:
+        return all(abs(complex(sp.N(entry, 30))) <= 1e-12 for entry in entries)
     rng = np.random.default_rng(seed)
-    for _ in range(5):
-        values = {s: sp.Float(rng.uniform(-3.0, 3.0)) for s in symbols}
-        numeric = expression.subs(values).evalf()
-        try:
-            entries = numeric if isinstance(numeric, sp.MatrixBase) else [numeric]
-            if any(abs(complex(entry)) > 1e-9 for entry in entries):
-                return False
-        except TypeError:
-            return False
-    return True
-
-
-def _vanishes(expression: Any) -> bool:
-    import sympy as sp
-
-    simplified = sp.simplify(expression)
-    if isinstance(simplified, sp.MatrixBase):
-        if simplified.is_zero_matrix:
-            return True
-    elif simplified == 0:
-        return True
-    return _numerically_zero(simplified)
+    points = [_samples(symbol, rng, 7) for symbol in symbols]
+    try:
+        function = sp.lambdify(symbols, entries, modules="numpy")
+        with np.errstate(all="ignore"):
+            values = np.asarray(function(*points), dtype=np.complex128)
+    except (TypeError, ValueError, NameError, ZeroDivisionError):
+        values = np.array(
+            [
+                [
+                    complex(entry.subs(dict(zip(symbols, point, strict=True))).evalf())
+                    for entry in entries
+                ]
+                for point in zip(*points, strict=True)
+            ]
+        )
+    return bool(np.all(np.isfinite(values)) and np.max(np.abs(values)) <= 1e-9)
 
 
 @dataclass(frozen=True)
 class ExpressionJudge(Judge):
-    """A SymPy expression or matrix, simplified before it is judged.
+    """A SymPy expression or matrix, judged by its value, so that any equivalent form passes.
 
     A wrong matrix is answered with the one entry that differs (the learner's entry, never the
     reference's). ``up_to_sign`` accepts the answer with either sign (for a combination of angles
@@ -431,7 +455,7 @@ class ExpressionJudge(Judge):
             wanted = f"a {ref.shape[0]}×{ref.shape[1]} matrix" if is_matrix else "an expression"
             return off(f"{self.what} is not {wanted}")
         if _vanishes(value - ref):
-            return correct(f"{self.what} equals the answer (after simplification)")
+            return correct(f"{self.what} equals the answer (written in another form is fine)")
         if self.up_to_sign and _vanishes(value + ref):
             return correct(f"{self.what} is right (with the other sign, which is as good here)")
         for mistake in self.mistakes:

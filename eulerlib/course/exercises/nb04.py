@@ -109,6 +109,7 @@ EXERCISES = [
             _WING_AFTER,
             what="your direction",
             tol=1e-6,
+            rotation=True,
             mistakes=(
                 Mistake(
                     [-1.0, 0.0, 0.0],
