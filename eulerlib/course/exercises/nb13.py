@@ -27,7 +27,7 @@ _RATES = (5.0, -3.0, 8.0)  # their rates, °/s
 
 def _body_rates(angles: tuple[float, ...], rates: tuple[float, ...], to_radians: bool) -> Array:
     """(p, q, r) of yaw–pitch–roll, typed in; ``to_radians=False`` takes sines of degrees."""
-    w, v, u = (math.radians(a) for a in angles) if to_radians else angles
+    _, v, u = (math.radians(a) for a in angles) if to_radians else angles  # no yaw in (p, q, r)
     dw, dv, du = rates
     return np.array(
         [
@@ -48,9 +48,7 @@ _FACTOR = math.cos(math.radians(80.0)) / math.cos(math.radians(89.0))
 # --- 13.3: Gram–Schmidt that keeps the z column -----------------------------------------------
 
 _TRUE = euler_to_matrix([-35.0, 50.0, 120.0], "rose", degrees=True)
-_NOISE = np.array(
-    [[0.9e-3, -1.3e-3, 0.4e-3], [-0.7e-3, 1.1e-3, 1.6e-3], [1.2e-3, 0.3e-3, -0.8e-3]]
-)
+_NOISE = np.array([[0.9e-3, -1.3e-3, 0.4e-3], [-0.7e-3, 1.1e-3, 1.6e-3], [1.2e-3, 0.3e-3, -0.8e-3]])
 _DRIFTED = _TRUE + _NOISE  # a rotation matrix after a long, careless computation
 
 
@@ -140,8 +138,7 @@ EXERCISES = [
                 "correct",
             ),
             Example(
-                "euler_rates_to_angular_velocity(angles_ex, rates_ex, frame='space',"
-                " degrees=True)",
+                "euler_rates_to_angular_velocity(angles_ex, rates_ex, frame='space', degrees=True)",
                 "off",
                 "fixed axes (the space frame)",
             ),
