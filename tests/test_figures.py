@@ -82,6 +82,8 @@ NOTEBOOK_TOPICS = [
     "08_gimbal_lock_seen",
     "09_conventions_compared",
     "10_numerical_robustness",
+    "13_angular_velocity_and_euler_rates",
+    "14_a_real_imu_recording",
 ]
 PNG_NAMES = [f"{topic}.png" for topic in NOTEBOOK_TOPICS]
 
