@@ -16,13 +16,13 @@ of the method: ``n`` steps give ``R(0) exp([ω n Δt]×)``, to rounding.
 
 Compare the other two ways of integrating, which the course measures:
 
-* the first-order step ``R + R [ω]× Δt`` is not a rotation at all (its columns grow by
-  ``1 + ½ (|ω| Δt)²`` per step);
+* the first-order step ``R + R [ω]× Δt`` is not a rotation at all (a column perpendicular to
+  ``ω`` grows by a factor of about ``1 + ½ (|ω| Δt)²`` per step);
 * integrating the Euler-angle rates (:func:`eulerlib.angular_velocity_to_euler_rates`) divides by
   ``cos β`` and fails near gimbal lock.
 
-What remains is the drift of rounding: after many steps ``R Rᵀ`` moves away from ``I`` by a few
-units of 1e-16 per step. ``repair=True`` replaces the attitude by its nearest rotation before the
+What remains is the drift of rounding: after many steps ``R Rᵀ`` moves away from ``I`` by about
+1e-16 per step. ``repair=True`` replaces the attitude by its nearest rotation before the
 step (:func:`eulerlib.nearest_rotation`).
 
 A sequence of samples is integrated one step per sample, by a loop over time, which cannot be
