@@ -13,6 +13,11 @@ vectors (:func:`rotvec_to_matrix`, :func:`matrix_to_rotvec`) and unit quaternion
 :func:`quaternion_to_euler`, stored as SciPy stores them); :func:`rotation_angle` and
 :func:`angle_between` measure rotations, and :func:`slerp` interpolates between them.
 
+Rotations in motion: :func:`euler_rates_to_angular_velocity` and
+:func:`angular_velocity_to_euler_rates` convert between Euler-angle rates and angular velocity
+(in the body's axes or the fixed ones), and :func:`integrate_angular_velocity` advances an
+attitude by one exact step of a constant angular velocity, as from a gyroscope's samples.
+
 Every public function checks its arguments once, by the same rules (:mod:`eulerlib._validation`),
 and the same keyword means the same thing everywhere: ``degrees`` (angles in and out in
 degrees), ``validate``/``repair``/``atol`` (how rotation matrices are checked), ``warn`` (the
@@ -30,6 +35,10 @@ array([30., 20., 10.])
 """
 
 from eulerlib._validation import REPAIR_LIMIT, ROTATION_ATOL
+from eulerlib.angular_velocity import (
+    angular_velocity_to_euler_rates,
+    euler_rates_to_angular_velocity,
+)
 from eulerlib.axis_angle import (
     AxisAngle,
     angle_between,
@@ -50,6 +59,7 @@ from eulerlib.gimbal_lock import (
     gimbal_lock_status,
     lock_combination,
 )
+from eulerlib.integration import integrate_angular_velocity
 from eulerlib.interpolation import slerp
 from eulerlib.named import (
     HeadingAttitudeBank,
@@ -100,16 +110,19 @@ __all__ = [
     "Sequence",
     "YawPitchRoll",
     "angle_between",
+    "angular_velocity_to_euler_rates",
     "axis_angle_to_matrix",
     "change_up_axis",
     "compose",
     "convert_angles",
     "elementary_rotation",
+    "euler_rates_to_angular_velocity",
     "euler_to_matrix",
     "euler_to_quaternion",
     "get_convention",
     "gimbal_lock_status",
     "heading_attitude_bank_to_matrix",
+    "integrate_angular_velocity",
     "invert",
     "is_rotation_matrix",
     "lock_combination",

@@ -128,6 +128,11 @@ class GimbalLockWarning(UserWarning):
     combinations : dict
         For each pole met (the singular middle angle in degrees: 90, -90, 0 or 180), the
         combination of the outer angles that stays defined there, in words.
+    rates : bool
+        False when angles were computed (the angle ``zeroed`` was set to 0); True when angle
+        *rates* were (:func:`eulerlib.angular_velocity_to_euler_rates`): then the rate of
+        ``zeroed`` was set to 0, the rate of ``carrier`` carries the whole turn, and the part
+        of the angular velocity that no angle rates can produce at lock was left out.
 
     Examples
     --------
@@ -146,7 +151,12 @@ class GimbalLockWarning(UserWarning):
     """
 
     def __init__(
-        self, convention: Convention, count: int, total: int, poles: tuple[int, ...]
+        self,
+        convention: Convention,
+        count: int,
+        total: int,
+        poles: tuple[int, ...],
+        rates: bool = False,
     ) -> None:
         self.convention = convention
         self.seq = convention.seq
@@ -157,6 +167,7 @@ class GimbalLockWarning(UserWarning):
         self.carrier = convention.carrier_name
         self.poles = poles
         self.combinations = {pole: lock_combination(convention, pole)[1] for pole in poles}
+        self.rates = rates
         super().__init__(self._words())
 
     def _words(self) -> str:
@@ -172,15 +183,25 @@ class GimbalLockWarning(UserWarning):
             for pole, combination in self.combinations.items()
         )
         poles = " or ".join(f"{pole}°" for pole in self.combinations)
-        return (
+        situation = (
             f"gimbal lock in {self.count} of {self.total} rotation(s) for {label}: {middle} is "
-            f"at {poles}, so {first} and {third} turn about the same axis and only {defined} "
-            f"is defined; {self.zeroed} (angle {self.zeroed_position + 1}) was set to 0 and "
-            f"{self.carrier} carries the whole turn"
+            f"at {poles}, so {first} and {third} turn about the same axis"
+        )
+        position = f"(angle {self.zeroed_position + 1})"
+        if self.rates:
+            return (
+                f"{situation} and only the rate of {defined} is defined; the rate of "
+                f"{self.zeroed} {position} was set to 0, the rate of {self.carrier} carries the "
+                "whole turn, and the part of the angular velocity that no angle rates can "
+                "produce was left out"
+            )
+        return (
+            f"{situation} and only {defined} is defined; {self.zeroed} {position} was set to 0 "
+            f"and {self.carrier} carries the whole turn"
         )
 
     def __reduce__(self) -> tuple[object, ...]:  # so that a warning can be pickled and rebuilt
-        return (type(self), (self.convention, self.count, self.total, self.poles))
+        return (type(self), (self.convention, self.count, self.total, self.poles, self.rates))
 
 
 _PACKAGE = os.path.dirname(os.path.abspath(__file__)) + os.sep
@@ -196,11 +217,16 @@ def _stacklevel_outside_package() -> int:
 
 
 def warn_if_locked(
-    convention: Convention, locked: NDArray[np.bool_], middle: NDArray[np.float64]
+    convention: Convention,
+    locked: NDArray[np.bool_],
+    middle: NDArray[np.float64],
+    rates: bool = False,
 ) -> None:
     """Emit one :class:`GimbalLockWarning` if any rotation is locked.
 
-    ``middle`` holds the middle angles in radians, the same shape as ``locked``.
+    ``middle`` holds the middle angles in radians, the same shape as ``locked``: in
+    [-π/2, π/2] for Tait–Bryan, [0, π] for proper Euler. ``rates`` says that angle rates, not
+    angles, were computed (see :attr:`GimbalLockWarning.rates`).
     """
     count = int(np.count_nonzero(locked))
     if not count:
@@ -213,7 +239,7 @@ def warn_if_locked(
         found = {90 if angle > 0 else -90 for angle in extremes}
     order = (90, -90, 0, 180)
     poles = tuple(pole for pole in order if pole in found)
-    warning = GimbalLockWarning(convention, count, int(locked.size), poles)
+    warning = GimbalLockWarning(convention, count, int(locked.size), poles, rates)
     warnings.warn(warning, stacklevel=_stacklevel_outside_package())
 
 

@@ -47,16 +47,19 @@ R0 = Rotation.from_euler("ZYX", [0.3, 0.2, 0.1]).as_matrix()
 Q0 = Rotation.from_euler("ZYX", [0.3, 0.2, 0.1]).as_quat()
 VALID_CALLS: dict[str, tuple[tuple[Any, ...], dict[str, Any]]] = {
     "angle_between": ((R0, R0.T), {}),
+    "angular_velocity_to_euler_rates": (([0.1, 0.2, 0.3], [1.0, 2.0, 3.0]), {}),
     "axis_angle_to_matrix": (([0.0, 0.0, 1.0], 0.5), {}),
     "change_up_axis": ((R0,), {}),
     "compose": ((R0, R0), {}),
     "convert_angles": (([0.1, 0.2, 0.3], "rose", "baker"), {}),
     "elementary_rotation": (("x", 0.5), {}),
+    "euler_rates_to_angular_velocity": (([0.1, 0.2, 0.3], [1.0, 2.0, 3.0]), {}),
     "euler_to_matrix": (([0.1, 0.2, 0.3],), {}),
     "euler_to_quaternion": (([0.1, 0.2, 0.3],), {}),
     "get_convention": (("rose",), {}),
     "gimbal_lock_status": ((R0,), {}),
     "heading_attitude_bank_to_matrix": ((0.1, 0.2, 0.3), {}),
+    "integrate_angular_velocity": ((R0, [1.0, 2.0, 3.0], 0.01), {}),
     "invert": ((R0,), {}),
     "is_rotation_matrix": ((R0,), {}),
     "lock_combination": (("rose", 90), {}),
@@ -173,13 +176,16 @@ def test_every_function_that_takes_matrices_takes_validate_repair_atol() -> None
 def test_every_function_that_takes_or_returns_angles_takes_degrees() -> None:
     with_angles = {
         "angle_between",
+        "angular_velocity_to_euler_rates",
         "axis_angle_to_matrix",
         "convert_angles",
         "elementary_rotation",
+        "euler_rates_to_angular_velocity",
         "euler_to_matrix",
         "gimbal_lock_status",
         "heading_attitude_bank_to_matrix",
         "euler_to_quaternion",
+        "integrate_angular_velocity",
         "matrix_to_axis_angle",
         "matrix_to_euler",
         "matrix_to_heading_attitude_bank",
@@ -466,6 +472,21 @@ def peak_bytes(call: Callable[[], object]) -> int:
         ("angle_between", lambda a, R, q: eulerlib.angle_between(R, R[::-1]), 8),
         ("slerp", lambda a, R, q: eulerlib.slerp(R, R[::-1], a[:, 0]), 72),
         ("slerp, one pair", lambda a, R, q: eulerlib.slerp(R[0], R[1], a[:, 0]), 72),
+        (
+            "euler_rates_to_angular_velocity",
+            lambda a, R, q: eulerlib.euler_rates_to_angular_velocity(a, q[:, :3]),
+            24,
+        ),
+        (
+            "angular_velocity_to_euler_rates",
+            lambda a, R, q: eulerlib.angular_velocity_to_euler_rates(a, q[:, :3]),
+            24,
+        ),
+        (
+            "integrate_angular_velocity",
+            lambda a, R, q: eulerlib.integrate_angular_velocity(R, a, a[:, 0]),
+            72,
+        ),
     ],
 )
 def test_no_temporary_as_large_as_the_input(name: str, call: Any, output_bytes: int, rng) -> None:

@@ -29,9 +29,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
+from numpy.typing import NDArray
 
+from eulerlib.angular_velocity import angular_velocity_to_euler_rates
+from eulerlib.axis_angle import angle_between, rotvec_to_matrix
 from eulerlib.elementary import elementary_rotation, rot_x, rot_z
 from eulerlib.euler import euler_to_matrix, matrix_to_euler
+from eulerlib.integration import integrate_angular_velocity
 from eulerlib.plotting import (
     aircraft_segments,
     animate_gimbal_lock,
@@ -248,6 +252,70 @@ def _numerical_robustness() -> Figure:
     return fig
 
 
+def _angular_velocity_and_euler_rates() -> Figure:
+    """A constant body rate that pitches the nose over the top: Euler rates fail near 90°."""
+    import matplotlib.pyplot as plt
+
+    omega = np.array([0.005, 1.0, 0.01])  # rad/s, body axes: the tumbling body of notebook 13
+    h, steps = 0.05, 60
+
+    def rates(angles: NDArray[np.float64]) -> NDArray[np.float64]:
+        return angular_velocity_to_euler_rates(angles, omega, "ZYX")
+
+    angles, R = [np.zeros(3)], [np.eye(3)]
+    for _ in range(steps):  # RK4 on the Euler-rate equations; one exact step on the matrix
+        a = angles[-1]
+        k1 = rates(a)
+        k2 = rates(a + h / 2 * k1)
+        k3 = rates(a + h / 2 * k2)
+        k4 = rates(a + h * k3)
+        angles.append(a + h / 6 * (k1 + 2 * k2 + 2 * k3 + k4))
+        R.append(integrate_angular_velocity(R[-1], omega, h))
+    times = h * np.arange(steps + 1)
+    truth = rotvec_to_matrix(omega * times[:, None])
+    floor = 1e-16
+    euler_error = angle_between(euler_to_matrix(np.array(angles)), truth, degrees=True)
+    matrix_error = angle_between(np.array(R), truth, degrees=True)
+    pitch = np.degrees(matrix_to_euler(truth, warn=False)[:, 1])
+    fig, ax = plt.subplots(figsize=(6, 3.6), layout="constrained")
+    ax.semilogy(times, np.maximum(euler_error, floor), color="tab:red", label="Euler rates, RK4")
+    ax.semilogy(times, np.maximum(matrix_error, floor), color="tab:blue", label="matrix, exact")
+    ax.axvline(times[np.argmax(pitch)], color="0.5", linestyle=":", linewidth=1)
+    ax.set_xlabel("time, s (dotted: the pitch comes closest to 90°)")
+    ax.set_ylabel("error, degrees")
+    ax.set_ylim(floor / 3, 1e4)
+    ax.grid(alpha=0.3, which="major")
+    right = ax.twinx()
+    right.plot(times, pitch, color="tab:green", linestyle=":", label="pitch")
+    right.set_ylabel("pitch, degrees", color="tab:green")
+    right.set_ylim(0, 100)
+    ax.set_title("a steady turn integrated with a fixed step", fontsize=10)
+    ax.legend(fontsize=8, loc="upper left")
+    return fig
+
+
+def _a_real_imu_recording() -> Figure:
+    """Yaw and roll swing together near pitch +90°, roll − yaw stays smooth (Rose eq 4b)."""
+    import matplotlib.pyplot as plt
+
+    # a body turning steadily about a tilted axis, passing 0.2° from pitch +90°
+    times = np.linspace(-0.5, 0.5, 201)
+    start = euler_to_matrix([20.0, 89.8, 30.0], "ZYX", degrees=True)
+    path = start @ rotvec_to_matrix(np.radians([20.0, 40.0, 10.0]) * times[:, None])
+    yaw, _, roll = np.degrees(matrix_to_euler(path, "ZYX", warn=False)).T
+    fig, ax = plt.subplots(figsize=(6, 3.6), layout="constrained")
+    ax.plot(times, np.unwrap(yaw, period=360), color="tab:blue", linewidth=2, label="yaw")
+    ax.plot(times, np.unwrap(roll, period=360), color="tab:red", linestyle="--", label="roll")
+    difference = (roll - yaw + 180.0) % 360.0 - 180.0
+    ax.plot(times, difference, color="black", linewidth=2.5, label="roll − yaw")
+    ax.set_xlabel("time, s")
+    ax.set_ylabel("degrees")
+    ax.grid(alpha=0.3)
+    ax.set_title("near pitch +90°: yaw and roll swing, roll − yaw does not", fontsize=10)
+    ax.legend(fontsize=8, loc="center left")
+    return fig
+
+
 def _frame_zyx() -> Figure:
     R = euler_to_matrix(_ANGLES, "ZYX", degrees=True)
     return plot_frames(R, figsize=(4, 4), title="ZYX: yaw 30°, pitch 20°, roll 10°")
@@ -264,6 +332,8 @@ THUMBNAILS: dict[str, Callable[[], Figure]] = {
     "07_gimbal_lock_seen.png": _gimbal_lock_seen,
     "08_conventions_compared.png": _conventions_compared,
     "09_numerical_robustness.png": _numerical_robustness,
+    "13_angular_velocity_and_euler_rates.png": _angular_velocity_and_euler_rates,
+    "14_a_real_imu_recording.png": _a_real_imu_recording,
 }
 
 #: Every file :func:`write_figures` writes, in the order it writes them.

@@ -10,7 +10,13 @@ eulerlib is faster). Both sides validate their input where the operation does so
 ``matrix_to_euler`` checks that every matrix is a rotation, and ``Rotation.from_matrix``
 orthogonalizes every matrix; ``quaternion_to_matrix`` and ``Rotation.from_quat`` both
 normalize every quaternion; ``slerp`` checks both ends, as ``Rotation.from_matrix`` does before
-SciPy's ``Slerp`` interpolates. This file is a script, not a test: nothing here asserts a time.
+SciPy's ``Slerp`` interpolates; one step of ``integrate_angular_velocity`` checks the attitudes,
+as ``Rotation.from_matrix`` does before the product with ``Rotation.from_rotvec``.
+
+SciPy has no conversion between Euler-angle rates and angular velocity. Those rows are timed
+against a plain NumPy baseline written here, loop-free: the Jacobian built with ``np.stack``
+from the three elementary rotations, applied with ``np.einsum`` and inverted with
+``np.linalg.solve``. This file is a script, not a test: nothing here asserts a time.
 """
 
 from __future__ import annotations
@@ -36,6 +42,52 @@ def best_time(function: Callable[[], object], repeats: int) -> float:
         function()
         times.append(time.perf_counter() - start)
     return min(times)
+
+
+def elementary(axis: int, angle: np.ndarray) -> np.ndarray:
+    """Rotations by ``angle`` (shape (n,)) about axis 0, 1 or 2, shape (n, 3, 3), by np.stack."""
+    c, s = np.cos(angle), np.sin(angle)
+    one, zero = np.ones_like(angle), np.zeros_like(angle)
+    rows = {
+        0: ((one, zero, zero), (zero, c, -s), (zero, s, c)),
+        1: ((c, zero, s), (zero, one, zero), (-s, zero, c)),
+        2: ((c, -s, zero), (s, c, zero), (zero, zero, one)),
+    }[axis]
+    return np.stack([np.stack(row, axis=-1) for row in rows], axis=-2)
+
+
+def baseline_jacobian(angles: np.ndarray, seq: str, frame: str) -> np.ndarray:
+    """The Euler-rate Jacobian, shape (n, 3, 3), as plain NumPy would build it.
+
+    Column ``i`` is the axis of rotation ``i`` as it lies when that rotation happens: for the
+    intrinsic form ``A B C``, ``(e_A, A e_B, A B e_C)`` in space, ``(Cᵀ Bᵀ e_A, Cᵀ e_B, e_C)`` in
+    the body. An extrinsic sequence is the intrinsic one reversed.
+    """
+    axes = ["xyz".index(letter) for letter in seq.lower()]
+    values = angles
+    if seq.islower():
+        axes, values = axes[::-1], angles[:, ::-1]
+    A, B, C = (elementary(axis, values[:, k]) for k, axis in enumerate(axes))
+    if frame == "space":
+        AB = np.einsum("nij,njk->nik", A, B)
+        first = np.broadcast_to(np.eye(3)[axes[0]], (len(angles), 3))
+        columns = [first, A[:, :, axes[1]], AB[:, :, axes[2]]]
+    else:
+        CtBt = np.einsum("nji,nkj->nik", C, B)  # Cᵀ Bᵀ
+        last = np.broadcast_to(np.eye(3)[axes[2]], (len(angles), 3))
+        columns = [CtBt[:, :, axes[0]], C[:, axes[1], :], last]
+    if seq.islower():
+        columns.reverse()
+    return np.stack(columns, axis=-1)
+
+
+def baseline_rates_to_omega(angles: np.ndarray, rates: np.ndarray, seq: str) -> np.ndarray:
+    return np.einsum("nij,nj->ni", baseline_jacobian(angles, seq, "body"), rates)
+
+
+def baseline_omega_to_rates(angles: np.ndarray, omega: np.ndarray, seq: str) -> np.ndarray:
+    J = baseline_jacobian(angles, seq, "body")
+    return np.linalg.solve(J, omega[..., np.newaxis])[..., 0]
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -64,6 +116,8 @@ def main(argv: list[str] | None = None) -> None:
     fractions = np.round(rng.uniform(0.0, 1.0, n) * 2**20) / 2**20
     keys = np.stack([R, ends], axis=1).reshape(-1, 3, 3)
     key_times, pair_times = np.arange(2 * n), 2 * np.arange(n) + fractions
+    rates = rng.normal(size=(n, 3))  # angle rates, and angular velocities in the body
+    dt = 1 / 256
 
     # the two libraries must agree on what they compute before their speed means anything
     assert np.allclose(eulerlib.euler_to_matrix(angles, seq), rotation.as_matrix(), atol=1e-12)
@@ -88,6 +142,21 @@ def main(argv: list[str] | None = None) -> None:
         eulerlib.slerp(R[0], ends[0], fractions),
         Slerp([0, 1], Rotation.from_matrix([R[0], ends[0]]))(fractions).as_matrix(),
         atol=1e-12,
+    )
+
+    assert np.allclose(
+        eulerlib.integrate_angular_velocity(R, rates, dt),
+        (Rotation.from_matrix(R) * Rotation.from_rotvec(rates * dt)).as_matrix(),
+        atol=1e-12,
+    )
+    omega = eulerlib.euler_rates_to_angular_velocity(angles, rates, seq)
+    assert np.allclose(omega, baseline_rates_to_omega(angles, rates, seq), atol=1e-12)
+    away = np.abs(eulerlib.gimbal_lock_status(R, seq).distance) > 1e-3  # well-conditioned
+    assert np.allclose(
+        eulerlib.angular_velocity_to_euler_rates(angles, rates, seq)[away],
+        baseline_omega_to_rates(angles, rates, seq)[away],
+        rtol=1e-9,
+        atol=1e-9,
     )
 
     cases: list[tuple[str, Callable[[], object], Callable[[], object]]] = [
@@ -169,6 +238,24 @@ def main(argv: list[str] | None = None) -> None:
             lambda: eulerlib.slerp(one_R, ends[0], fractions),
             lambda: Slerp([0, 1], Rotation.from_matrix([one_R, ends[0]]))(fractions).as_matrix(),
         ),
+        (
+            "integrate one step, body",
+            lambda: eulerlib.integrate_angular_velocity(R, rates, dt),
+            lambda: (Rotation.from_matrix(R) * Rotation.from_rotvec(rates * dt)).as_matrix(),
+        ),
+    ]
+    # no SciPy equivalent: eulerlib against the plain NumPy baseline of this script
+    baseline_cases: list[tuple[str, Callable[[], object], Callable[[], object]]] = [
+        (
+            "euler rates -> omega, body",
+            lambda: eulerlib.euler_rates_to_angular_velocity(angles, rates, seq),
+            lambda: baseline_rates_to_omega(angles, rates, seq),
+        ),
+        (
+            "omega -> euler rates, body",
+            lambda: eulerlib.angular_velocity_to_euler_rates(angles, rates, seq),
+            lambda: baseline_omega_to_rates(angles, rates, seq),
+        ),
     ]
 
     print(
@@ -180,6 +267,21 @@ def main(argv: list[str] | None = None) -> None:
     print(header)
     print("-" * len(header))
     for name, ours, theirs in cases:
+        if args.only not in name:
+            continue
+        t_ours = best_time(ours, args.repeats)
+        t_theirs = best_time(theirs, args.repeats)
+        print(
+            f"{name:<32}{t_ours * 1e3:>9.1f} ms{t_theirs * 1e3:>9.1f} ms{t_theirs / t_ours:>15.2f}x"
+        )
+    if not any(args.only in name for name, _, _ in baseline_cases):
+        return
+    print()
+    print("SciPy has no Euler-rate conversion; against plain NumPy (np.stack, np.einsum, solve):")
+    header = f"{'operation':<32}{'eulerlib':>12}{'numpy':>12}{'numpy/eulerlib':>16}"
+    print(header)
+    print("-" * len(header))
+    for name, ours, theirs in baseline_cases:
         if args.only not in name:
             continue
         t_ours = best_time(ours, args.repeats)

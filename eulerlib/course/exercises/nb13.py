@@ -1,0 +1,245 @@
+"""Answer key of notebook 13, angular velocity and Euler rates (ω from Ṙ Rᵀ, 1/cos(pitch), drift).
+
+The references are typed in from the formulas (the aircraft body rates p, q, r of yaw–pitch–roll;
+Gram–Schmidt written out), not taken from the library functions the notebook teaches; the test
+table's rows that call those functions must agree with them.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import NDArray
+
+from eulerlib import euler_to_matrix
+
+from .judges import ArrayJudge, Mistake, NumberJudge
+from .key import Example, Exercise
+
+Array = NDArray[np.float64]
+
+# --- 13.1: the gyroscope's reading from angle rates ---------------------------------------------
+
+_ANGLES = (40.0, 25.0, -10.0)  # yaw, pitch, roll, degrees
+_RATES = (5.0, -3.0, 8.0)  # their rates, °/s
+
+
+def _body_rates(angles: tuple[float, ...], rates: tuple[float, ...], to_radians: bool) -> Array:
+    """(p, q, r) of yaw–pitch–roll, typed in; ``to_radians=False`` takes sines of degrees."""
+    _, v, u = (math.radians(a) for a in angles) if to_radians else angles  # no yaw in (p, q, r)
+    dw, dv, du = rates
+    return np.array(
+        [
+            du - dw * math.sin(v),
+            dv * math.cos(u) + dw * math.sin(u) * math.cos(v),
+            -dv * math.sin(u) + dw * math.cos(u) * math.cos(v),
+        ]
+    )
+
+
+_PQR = _body_rates(_ANGLES, _RATES, to_radians=True)
+_SPACE = euler_to_matrix(_ANGLES, "rose", degrees=True) @ _PQR
+
+# --- 13.2: how the yaw rate grows near pitch 90° ------------------------------------------------
+
+_FACTOR = math.cos(math.radians(80.0)) / math.cos(math.radians(89.0))
+
+# --- 13.3: Gram–Schmidt that keeps the z column -----------------------------------------------
+
+_TRUE = euler_to_matrix([-35.0, 50.0, 120.0], "rose", degrees=True)
+_NOISE = np.array([[0.9e-3, -1.3e-3, 0.4e-3], [-0.7e-3, 1.1e-3, 1.6e-3], [1.2e-3, 0.3e-3, -0.8e-3]])
+_DRIFTED = _TRUE + _NOISE  # a rotation matrix after a long, careless computation
+
+
+def _unit(vector: Array) -> Array:
+    result: Array = vector / math.sqrt(float(vector @ vector))
+    return result
+
+
+def _keep_column(M: Array, first: int) -> Array:
+    """Gram–Schmidt that keeps column ``first`` (0 or 2), then the x or z column, right-handed."""
+    if first == 2:
+        z = _unit(M[:, 2])
+        x = _unit(M[:, 0] - (z @ M[:, 0]) * z)
+        y = np.cross(z, x)
+    else:
+        x = _unit(M[:, 0])
+        y = _unit(M[:, 1] - (x @ M[:, 1]) * x)
+        z = np.cross(x, y)
+    return np.column_stack([x, y, z])
+
+
+def _nearest(M: Array) -> Array:
+    u, _, vt = np.linalg.svd(M)
+    result: Array = u @ vt
+    return result
+
+
+EXERCISES = [
+    Exercise(
+        id="13.1",
+        level="apply",
+        judge=ArrayJudge(
+            _PQR,
+            what="your (p, q, r)",
+            mistakes=(
+                Mistake(
+                    _SPACE,
+                    "this is ω in the fixed axes (the space frame); a gyroscope strapped to the "
+                    "body reads it in the body's own axes, Rᵀ times that",
+                ),
+                Mistake(
+                    np.array(_RATES[::-1]),
+                    "the angle rates are not the angular velocity: each rate turns the body "
+                    "about its own axis as the earlier turns have moved it, so (roll rate, pitch "
+                    "rate, yaw rate) is ω only when all three angles are 0",
+                ),
+                Mistake(
+                    np.array(_RATES),
+                    "the angle rates are not the angular velocity: each rate turns the body "
+                    "about its own axis as the earlier turns have moved it",
+                ),
+                Mistake(
+                    _body_rates(_ANGLES, _RATES, to_radians=False),
+                    "the sines and cosines were taken of the angles in degrees as if they were "
+                    "radians: convert the angles with np.radians first",
+                ),
+                Mistake(
+                    np.radians(_PQR),
+                    "this is the answer in rad/s; the question asks for °/s",
+                ),
+                Mistake(
+                    _PQR[::-1],
+                    "the components are in reverse order: p, q, r turn about the body's x, y "
+                    "and z axes, in that order",
+                ),
+            ),
+        ),
+        given=lambda: (np.array(_ANGLES), np.array(_RATES)),
+        examples=(
+            Example(
+                "[rates_ex[2] - rates_ex[0] * np.sin(np.radians(angles_ex[1])),"
+                " rates_ex[1] * np.cos(np.radians(angles_ex[2]))"
+                " + rates_ex[0] * np.sin(np.radians(angles_ex[2]))"
+                " * np.cos(np.radians(angles_ex[1])),"
+                " -rates_ex[1] * np.sin(np.radians(angles_ex[2]))"
+                " + rates_ex[0] * np.cos(np.radians(angles_ex[2]))"
+                " * np.cos(np.radians(angles_ex[1]))]",
+                "correct",
+            ),
+            Example(
+                "euler_rates_to_angular_velocity(angles_ex, rates_ex, 'rose', degrees=True)",
+                "correct",
+            ),
+            Example(
+                "np.degrees(euler_rates_to_angular_velocity(np.radians(angles_ex),"
+                " np.radians(rates_ex)))",
+                "correct",
+            ),
+            Example(
+                "euler_rates_to_angular_velocity(angles_ex, rates_ex, frame='space', degrees=True)",
+                "off",
+                "fixed axes (the space frame)",
+            ),
+            Example("rates_ex[::-1]", "off", "the angle rates are not the angular velocity"),
+            Example(
+                "euler_rates_to_angular_velocity(angles_ex, rates_ex)",
+                "off",
+                "as if they were radians",
+            ),
+            Example(
+                "euler_rates_to_angular_velocity(np.radians(angles_ex), np.radians(rates_ex))",
+                "off",
+                "rad/s",
+            ),
+            Example("'(p, q, r)'", "off", "text"),
+        ),
+        forbidden=tuple(f"{value:.3f}" for value in _PQR),
+    ),
+    Exercise(
+        id="13.2",
+        level="predict",
+        judge=NumberJudge(
+            _FACTOR,
+            what="your factor",
+            tol=0.01,
+            mistakes=(
+                Mistake(
+                    1 / _FACTOR,
+                    "that is the factor by which the yaw rate would shrink; it grows as the "
+                    "pitch nears 90°, like 1 / cos(pitch)",
+                ),
+                Mistake(
+                    89.0 / 80.0,
+                    "the yaw rate does not grow in proportion to the pitch angle: it grows like "
+                    "1 / cos(pitch)",
+                ),
+                Mistake(
+                    math.tan(math.radians(89.0)) / math.tan(math.radians(80.0)),
+                    "tan(pitch) is how the roll rate picks up the yaw rate (u̇ = p + ẇ sin v); "
+                    "the yaw rate itself is divided by cos(pitch)",
+                ),
+                Mistake(
+                    math.cos(80.0) / math.cos(89.0),
+                    "the cosines were taken of 80 and 89 as if they were radians",
+                ),
+            ),
+        ),
+        examples=(
+            Example("np.cos(np.radians(80)) / np.cos(np.radians(89))", "correct"),
+            Example("9.95", "correct"),
+            Example("1 / np.cos(np.radians(89)) * np.cos(np.radians(80))", "correct"),
+            Example("0.1", "off", "would shrink"),
+            Example("89 / 80", "off", "in proportion to the pitch"),
+            Example("np.cos(80) / np.cos(89)", "off", "as if they were radians"),
+            Example("np.tan(np.radians(89)) / np.tan(np.radians(80))", "off", "tan(pitch)"),
+            Example("'ten'", "off", "text"),
+        ),
+        forbidden=("9.95", "9.949", "57.29"),
+    ),
+    Exercise(
+        id="13.3",
+        level="extend",
+        judge=ArrayJudge(
+            _keep_column(_DRIFTED, 2),
+            what="your repaired matrix",
+            rotation=True,
+            mistakes=(
+                Mistake(
+                    _nearest(_DRIFTED),
+                    "this is the nearest rotation (the SVD), which moves all three columns a "
+                    "little; the question keeps the direction of column 3 (z) exactly",
+                ),
+                Mistake(
+                    _keep_column(_DRIFTED, 0),
+                    "this Gram–Schmidt keeps the direction of column 1 (x); the question keeps "
+                    "column 3 (z) and then as much of column 1 as it can",
+                ),
+            ),
+        ),
+        given=lambda: _DRIFTED.copy(),
+        examples=(
+            # QR is Gram–Schmidt: on the columns (z, x, y), with the signs made positive
+            Example(
+                "np.linalg.qr(M_ex[:, [2, 0, 1]])[0][:, [1, 2, 0]]"
+                " * np.sign(np.diag(np.linalg.qr(M_ex[:, [2, 0, 1]])[1]))[[1, 2, 0]]",
+                "correct",
+            ),
+            Example("nearest_rotation(M_ex)", "off", "nearest rotation (the SVD)"),
+            Example(
+                "np.linalg.qr(M_ex)[0] * np.sign(np.diag(np.linalg.qr(M_ex)[1]))",
+                "off",
+                "keeps the direction of column 1",
+            ),
+            Example("M_ex", "off", "not a rotation"),
+            Example(  # the frame built as rows instead of columns
+                "(np.linalg.qr(M_ex[:, [2, 0, 1]])[0][:, [1, 2, 0]]"
+                " * np.sign(np.diag(np.linalg.qr(M_ex[:, [2, 0, 1]])[1]))[[1, 2, 0]]).T",
+                "off",
+                "transpose",
+            ),
+        ),
+        forbidden=tuple(f"{value:.4f}" for value in _keep_column(_DRIFTED, 2).ravel()),
+    ),
+]

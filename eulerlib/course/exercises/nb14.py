@@ -1,0 +1,157 @@
+"""Answer key of notebook 14, a real IMU recording (the device's conventions, lock, the gyroscope).
+
+The questions use data in the device's conventions, as the notebook works them out from the
+recording: quaternions stored scalar first that give the earth frame in sensor coordinates,
+``M = R(q)ᵀ`` turning sensor coordinates into earth coordinates, yaw–pitch–roll z-y-x of ``M``,
+attitude samples at 128 Hz and the gyroscope in °/s about the sensor's axes. The data are made
+here from stated attitudes and rates, not taken from the recording, so that the key needs no file.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from eulerlib import euler_to_matrix, matrix_to_quaternion, quaternion_to_matrix, rotvec_to_matrix
+
+from .judges import ArrayJudge, ChoiceJudge, Mistake
+from .key import Example, Exercise
+
+ATTITUDE_RATE = 128.0  # Hz, the device's quaternion, matrix and Euler-angle samples
+
+# --- 14.1: the device's quaternion to its attitude matrix ---------------------------------------
+
+_M1 = euler_to_matrix([-150.0, 20.0, 35.0], "rose", degrees=True)  # sensor → earth
+_Q1 = matrix_to_quaternion(_M1.T, scalar_first=True)  # as the device stores it: R(q) = Mᵀ
+
+# --- 14.3: from two consecutive attitudes back to the gyroscope's reading -----------------------
+
+_OMEGA = np.array([120.0, -45.0, 300.0])  # °/s about the sensor's axes
+_M0 = euler_to_matrix([35.0, 60.0, -110.0], "rose", degrees=True)
+_M0_NEXT = _M0 @ rotvec_to_matrix(_OMEGA / ATTITUDE_RATE, degrees=True)
+
+
+_SPACE_OMEGA = _M0 @ _OMEGA  # the same turn, in earth axes
+
+EXERCISES = [
+    Exercise(
+        id="14.1",
+        level="apply",
+        judge=ArrayJudge(
+            _M1,
+            what="your attitude matrix",
+            rotation=True,
+            mistakes=(
+                Mistake(
+                    _M1.T,
+                    "this is R(q): the earth's axes in sensor coordinates. The device's "
+                    "attitude, which turns sensor coordinates into earth coordinates, is its "
+                    "transpose",
+                ),
+                Mistake(
+                    quaternion_to_matrix(_Q1),
+                    "you read the quaternion as scalar last (x, y, z, w); this device writes the "
+                    "scalar first (w, x, y, z)",
+                ),
+                Mistake(
+                    quaternion_to_matrix(_Q1).T,
+                    "you read the quaternion as scalar last (x, y, z, w); this device writes the "
+                    "scalar first (w, x, y, z)",
+                ),
+            ),
+        ),
+        given=lambda: _Q1.copy(),
+        examples=(
+            Example("quaternion_to_matrix(q_ex, scalar_first=True).T", "correct"),
+            Example("quaternion_to_matrix(-q_ex, scalar_first=True).T", "correct"),
+            Example("quaternion_to_matrix(q_ex * [1, -1, -1, -1], scalar_first=True)", "correct"),
+            Example("quaternion_to_matrix(q_ex, scalar_first=True)", "off", "transpose"),
+            Example("quaternion_to_matrix(q_ex).T", "off", "scalar last"),
+            Example("quaternion_to_matrix(q_ex)", "off", "scalar last"),
+            Example("q_ex", "off", "shape (4,)"),
+        ),
+        forbidden=tuple(f"{value:.4f}" for value in _M1.ravel()),
+    ),
+    Exercise(
+        id="14.2",
+        level="predict",
+        judge=ChoiceJudge(
+            options={
+                "a": "roll + yaw",
+                "b": "roll − yaw",
+                "c": "yaw alone",
+                "d": "roll alone",
+            },
+            answer="a",
+            explanations={
+                "a": "yes: at pitch −90° the first and third axes line up the other way round, "
+                "so the matrix depends on roll + yaw only (Rose, eq 4a), and that sum stays "
+                "smooth while yaw and roll swing in opposite directions",
+                "b": "roll − yaw is what stays defined at pitch +90°, the pole this recording "
+                "visits (eq 4b); at −90° the two turns add, and the matrix keeps their sum",
+                "c": "alone, yaw is defined at neither pole: near one it swings by large "
+                "amounts from one sample to the next, and only a combination with roll is "
+                "pinned down by the matrix",
+                "d": "alone, roll is defined at neither pole: near one it swings by large "
+                "amounts from one sample to the next, and only a combination with yaw is "
+                "pinned down by the matrix",
+            },
+        ),
+        examples=(
+            Example("'a'", "correct"),
+            Example("' A '", "correct"),
+            Example("'b'", "off", "pitch +90°"),
+            Example("'c'", "off", "alone, yaw"),
+            Example("'d'", "off", "alone, roll"),
+            Example("'roll + yaw'", "off", "give one of the options"),
+        ),
+        forbidden=("answer_2 = 'a'", 'answer_2 = "a"'),
+    ),
+    Exercise(
+        id="14.3",
+        level="extend",
+        judge=ArrayJudge(
+            _OMEGA,
+            what="your angular velocity",
+            tol=1e-6,
+            mistakes=(
+                Mistake(
+                    _SPACE_OMEGA,
+                    "this is ω in the earth's axes (from M₁ M₀ᵀ); the gyroscope measures it in "
+                    "the sensor's own axes, from M₀ᵀ M₁",
+                ),
+                Mistake(
+                    np.radians(_OMEGA),
+                    "this is in rad/s; the question asks for °/s",
+                ),
+                Mistake(
+                    2 * _OMEGA,
+                    "the attitude samples are 1/128 s apart (128 Hz); 1/256 s is the interval "
+                    "of the gyroscope's samples",
+                ),
+                Mistake(
+                    -_OMEGA,
+                    "M₁ᵀ M₀ is the turn from the later attitude back to the earlier one: the "
+                    "rate has the right size and the wrong direction",
+                ),
+            ),
+        ),
+        given=lambda: (_M0.copy(), _M0_NEXT.copy()),
+        examples=(
+            Example("np.degrees(matrix_to_rotvec(M0_ex.T @ M1_ex)) * 128", "correct"),
+            Example("matrix_to_rotvec(M0_ex.T @ M1_ex, degrees=True) / (1 / 128)", "correct"),
+            Example(
+                "matrix_to_rotvec(M1_ex @ M0_ex.T, degrees=True) * 128",
+                "off",
+                "earth's axes",
+            ),
+            Example("matrix_to_rotvec(M0_ex.T @ M1_ex) * 128", "off", "rad/s"),
+            Example("matrix_to_rotvec(M0_ex.T @ M1_ex, degrees=True) * 256", "off", "1/128 s"),
+            Example(
+                "matrix_to_rotvec(M1_ex.T @ M0_ex, degrees=True) * 128",
+                "off",
+                "wrong direction",
+            ),
+        ),
+        forbidden=("120.0", "300.0", "[120"),
+    ),
+]
