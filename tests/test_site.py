@@ -45,6 +45,7 @@ import nbformat
 import pytest
 
 from eulerlib.course.site import (
+    build_site,
     course_pages,
     jupyterlab_command,
     prepare_notebook,
@@ -202,6 +203,15 @@ def test_the_pages_show_the_readme_command_that_opens_jupyterlab() -> None:
     )
     with pytest.raises(ValueError, match="no command that opens notebooks/"):
         jupyterlab_command("# no commands here\n")
+
+
+def test_the_site_is_not_built_over_another_folder_or_a_file(tmp_path: Path) -> None:
+    (tmp_path / "notes.txt").write_text("a teacher's notes", encoding="utf-8")
+    with pytest.raises(ValueError, match="not empty and holds no site built before"):
+        build_site(REPO, tmp_path)
+    with pytest.raises(ValueError, match="is a file, not a folder"):
+        build_site(REPO, tmp_path / "notes.txt")
+    assert [path.name for path in tmp_path.iterdir()] == ["notes.txt"]
 
 
 def test_the_site_command_names_its_extra(tmp_path: Path) -> None:

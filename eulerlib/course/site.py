@@ -20,7 +20,7 @@ source.
   it live, and the widgets' saved state is dropped so that no widget JavaScript is fetched; an
   animation's player takes its icons from the theme's own Font Awesome instead of a CDN;
 * it runs Sphinx, with MathJax 3 copied into the site from the ``sphinx-mathjax-offline``
-  package, and moves the HTML into the output folder.
+  package, and copies the HTML into the output folder, replacing a site built there before.
 
 Nothing on the pages asks for a file from another host; ``tests/test_site.py`` opens every
 page in a headless Chromium to check it. This module needs the ``site`` extra (Jupyter Book 1,
@@ -320,14 +320,17 @@ def build_site(root: str | Path = ".", out: str | Path | None = None) -> SiteBui
         If ``root`` is not the repository, ``out`` holds something else than a site, a widget
         has no stored picture, or Sphinx fails.
     """
-    from jupyter_book.config import get_final_config
-    from jupyter_book.sphinx import build_sphinx
-
     start = time.perf_counter()
     root = Path(root)
     out = Path(out) if out is not None else root / DEFAULT_OUT
-    if out.exists() and any(out.iterdir()) and not (out / ".buildinfo").is_file():
+    if out.exists() and not out.is_dir():
+        raise ValueError(f"{out} is a file, not a folder for the site")
+    if out.is_dir() and any(out.iterdir()) and not (out / ".buildinfo").is_file():
         raise ValueError(f"{out} is not empty and holds no site built before; choose another --out")
+
+    from jupyter_book.config import get_final_config
+    from jupyter_book.sphinx import build_sphinx
+
     with tempfile.TemporaryDirectory(prefix="eulerlib-site-") as temporary:
         stage, html = Path(temporary) / "book", Path(temporary) / "html"
         pages = _stage(root, stage)
