@@ -167,8 +167,8 @@ def run_site(args: argparse.Namespace) -> int:
 
     out = args.out if args.out is not None else DEFAULT_OUT
     built = build_site(Path("."), out)
-    for warning in built.warnings:
-        print(f"warning: {warning}", file=sys.stderr)
+    for warning in built.warnings:  # "file:line: WARNING: what", as Sphinx reports them
+        print(warning, file=sys.stderr)
     print(
         f"built {len(built.pages)} notebook pages into {out} in {built.seconds:.1f} s; "
         f"to read it, run: python3 -m http.server --directory {out}"

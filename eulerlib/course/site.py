@@ -253,8 +253,11 @@ def _replace_widgets(cell: Any, where: str) -> bool:
     return widget
 
 
-def _stage(root: Path, stage: Path) -> list[str]:
-    """Copy and prepare the book's sources in ``stage``; return the notebook pages in order."""
+def _stage(root: Path, stage: Path) -> tuple[list[str], list[str]]:
+    """Copy and prepare the book's sources in ``stage``.
+
+    Returns the notebook pages in reading order, and warnings about the README's course map.
+    """
     site, notebook_folder = root / SITE_FOLDER, root / "notebooks"
     for folder in (site, notebook_folder):
         if not folder.is_dir():
@@ -266,7 +269,11 @@ def _stage(root: Path, stage: Path) -> list[str]:
     command = jupyterlab_command(readme)
     shutil.copytree(site, stage, dirs_exist_ok=True)
     (stage / "README.md").write_text(readme, encoding="utf-8")
+    warnings = []
     for picture in sorted(set(_README_PICTURE.findall(readme))):
+        if not (root / picture).is_file():
+            warnings.append(f"README.md: WARNING: the course map shows {picture}, which is missing")
+            continue
         target = stage / "_extra" / picture
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(root / picture, target)
@@ -295,7 +302,7 @@ def _stage(root: Path, stage: Path) -> list[str]:
         pages.append(f"notebooks/{path.stem}")
     toc = json.dumps(table_of_contents(pages), indent=2)  # JSON is YAML
     (stage / "_toc.yml").write_text(toc + "\n", encoding="utf-8")
-    return pages
+    return pages, warnings
 
 
 def build_site(root: str | Path = ".", out: str | Path | None = None) -> SiteBuild:
@@ -333,7 +340,7 @@ def build_site(root: str | Path = ".", out: str | Path | None = None) -> SiteBui
 
     with tempfile.TemporaryDirectory(prefix="eulerlib-site-") as temporary:
         stage, html = Path(temporary) / "book", Path(temporary) / "html"
-        pages = _stage(root, stage)
+        pages, readme_warnings = _stage(root, stage)
         config = stage / "_config.yml"
         overrides: dict[str, Any] = {
             "external_toc_path": (stage / "_toc.yml").as_posix(),
@@ -366,7 +373,7 @@ def build_site(root: str | Path = ".", out: str | Path | None = None) -> SiteBui
         out.parent.mkdir(parents=True, exist_ok=True)
         shutil.copytree(html, out)
     messages = _ANSI_COLOUR.sub("", log.getvalue()).replace(f"{stage}/", "")
-    warnings = tuple(
+    warnings = tuple(readme_warnings) + tuple(
         line.strip() for line in messages.splitlines() if "WARNING" in line or "ERROR" in line
     )
     return SiteBuild(
