@@ -8,7 +8,9 @@ sub-parser and sets ``run`` as a default (``run(args) -> int``); heavy imports h
   (:mod:`eulerlib.convert_cli`);
 * ``eulerlib figures``: redraw every figure of the course (:mod:`eulerlib.course.commands`);
 * ``eulerlib notebooks``: make student copies of the notebooks, or re-execute and normalize
-  them (:mod:`eulerlib.course.commands`).
+  them (:mod:`eulerlib.course.commands`);
+* ``eulerlib site``: build the course website from the stored notebooks
+  (:mod:`eulerlib.course.commands`).
 
 Bad arguments, and a command whose optional dependencies are not installed, end with a one-line
 message on standard error and a non-zero exit status, never a traceback.
@@ -32,6 +34,7 @@ SUBCOMMANDS: dict[str, tuple[Callable[[argparse.ArgumentParser], None], str]] = 
         course_commands.configure_notebooks,
         "make student copies of the course notebooks, or refresh them",
     ),
+    "site": (course_commands.configure_site, "build the course website from the notebooks"),
 }
 
 

@@ -1,4 +1,5 @@
-"""The course's commands: ``eulerlib notebooks student|refresh`` and ``eulerlib figures``.
+"""The course's commands: ``eulerlib notebooks student|refresh``, ``eulerlib figures`` and
+``eulerlib site build``.
 
 * ``eulerlib notebooks student --out DIR [--src DIR] [--force]`` (for teachers) writes a
   student copy of every course notebook into ``DIR`` (:mod:`eulerlib.course.student`). It does
@@ -8,12 +9,14 @@
   default.
 * ``eulerlib figures [--out DIR]`` (for maintainers) redraws every figure of the course
   (:mod:`eulerlib.course.figures`) into ``figures/`` by default.
+* ``eulerlib site build [--out DIR]`` (for teachers and maintainers) builds the course website
+  from the stored notebooks (:mod:`eulerlib.course.site`) into ``build/site/`` by default.
 
 The course itself (``notebooks/``, ``figures/``) lives in the repository, not in the installed
 package: without ``--src`` or ``--out`` the commands work on those folders of the current
 directory, and say so when they are not there. The notebook tools (nbformat, nbclient,
-nbconvert) and matplotlib are imported only when a command runs; when they are missing, the
-command ends with one line naming the extra to install. Like every subcommand of
+nbconvert), matplotlib and Jupyter Book are imported only when a command runs; when they are
+missing, the command ends with one line naming the extra to install. Like every subcommand of
 :mod:`eulerlib.cli`, these end with one line on standard error and a non-zero exit status when
 something is wrong, never with a traceback.
 """
@@ -21,17 +24,28 @@ something is wrong, never with a traceback.
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 
 from eulerlib._extras import require
 
-__all__ = ["configure_figures", "configure_notebooks", "run_figures", "run_notebooks"]
+__all__ = [
+    "configure_figures",
+    "configure_notebooks",
+    "configure_site",
+    "run_figures",
+    "run_notebooks",
+    "run_site",
+]
 
 #: The course's folders, relative to the top folder of the repository.
 NOTEBOOK_FOLDER = Path("notebooks")
 FIGURE_FOLDER = Path("figures")
 #: The packages of the ``notebooks`` extra that ``eulerlib notebooks`` imports.
 NOTEBOOK_TOOLS = ("nbformat", "nbclient", "nbconvert")
+#: The packages of the ``site`` extra that ``eulerlib site build`` imports (the MathJax package's
+#: name is its import name).
+SITE_TOOLS = ("jupyter_book", "sphinx-mathjax-offline", "nbformat", "nbconvert")
 
 
 def configure_notebooks(parser: argparse.ArgumentParser) -> None:
@@ -128,4 +142,35 @@ def run_figures(args: argparse.Namespace) -> int:
     out = args.out if args.out is not None else _course_folder(FIGURE_FOLDER, "pass --out DIR")
     written = write_figures(out)
     print(f"wrote {len(written)} figures to {out}")
+    return 0
+
+
+def configure_site(parser: argparse.ArgumentParser) -> None:
+    """Add the ``build`` action to the ``site`` sub-parser."""
+    actions = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
+    build = actions.add_parser(
+        "build",
+        help="build the course website from the stored notebooks",
+        description="Build the course website from the stored notebooks (nothing is executed). "
+        "Run it from the top folder of the repository.",
+    )
+    build.add_argument(
+        "--out", type=Path, help="folder for the website (default: build/site/); replaced"
+    )
+    parser.set_defaults(run=run_site)
+
+
+def run_site(args: argparse.Namespace) -> int:
+    """Carry out ``eulerlib site build``."""
+    require(SITE_TOOLS, extra="site", needed_by=f"eulerlib site {args.action}")
+    from eulerlib.course.site import DEFAULT_OUT, build_site
+
+    out = args.out if args.out is not None else DEFAULT_OUT
+    built = build_site(Path("."), out)
+    for warning in built.warnings:  # "file:line: WARNING: what", as Sphinx reports them
+        print(warning, file=sys.stderr)
+    print(
+        f"built {len(built.pages)} notebook pages into {out} in {built.seconds:.1f} s; "
+        f"to read it, run: python3 -m http.server --directory {out}"
+    )
     return 0

@@ -1,0 +1,384 @@
+"""The course as a static website, built from the stored notebooks, that works offline.
+
+The website is a Jupyter Book 1 (Sphinx) build of the committed notebooks. It executes nothing:
+every page shows the stored outputs, which are exactly what strict nbval compares. The book's
+configuration and the landing page's source live in the repository's ``site/`` folder; the
+landing page includes the README's course map at build time, so the README stays its one
+source.
+
+:func:`build_site` works in a temporary staging folder and writes only the finished site:
+
+* it copies ``site/``, the README, the notebooks and the pictures the README shows there;
+* it writes the table of contents from ``notebooks/*.ipynb``: the numbered notebooks in
+  their order, then the others (the glossary), so whatever notebooks the course has become
+  its pages (:func:`table_of_contents`);
+* it prepares every notebook for reading on the web (:func:`prepare_notebook`): a box under
+  the title offers the notebook for download, as the teacher's edition (the committed file)
+  and as a student copy (:mod:`eulerlib.course.student`), and shows the README's command that
+  opens the course in JupyterLab; worked solutions are folded behind a "Show the worked
+  solution" button; a widget shows the picture stored next to it, with a sentence on running
+  it live, and the widgets' saved state is dropped so that no widget JavaScript is fetched; an
+  animation's player takes its icons from the theme's own Font Awesome instead of a CDN;
+* it runs Sphinx, with MathJax 3 copied into the site from the ``sphinx-mathjax-offline``
+  package, and copies the HTML into the output folder, replacing a site built there before.
+
+Nothing on the pages asks for a file from another host; ``tests/test_site.py`` opens every
+page in a headless Chromium to check it. This module needs the ``site`` extra (Jupyter Book 1,
+MathJax) besides the ``notebooks`` extra's notebook tools; the command line is
+``eulerlib site build [--out DIR]`` (:mod:`eulerlib.course.commands`).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import copy
+import io
+import json
+import re
+import shutil
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import nbformat
+
+from eulerlib.course.notebook_form import read_notebook, write_notebook
+from eulerlib.course.student import SOLUTION_TAG, student_copy
+
+__all__ = [
+    "SiteBuild",
+    "build_site",
+    "course_pages",
+    "jupyterlab_command",
+    "prepare_notebook",
+    "table_of_contents",
+]
+
+#: The folder of the book's configuration and landing page, relative to the repository.
+SITE_FOLDER = Path("site")
+#: Where ``eulerlib site build`` writes the site unless told otherwise (git-ignored).
+DEFAULT_OUT = Path("build") / "site"
+
+#: Extensions of Jupyter Book's default set that the site does without (see :func:`build_site`).
+_LEFT_OUT_EXTENSIONS = frozenset({"sphinx_thebe"})
+_ANSI_COLOUR = re.compile(r"\x1b\[[0-9;]*m")
+_WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
+_PICTURES = frozenset({"image/png", "image/svg+xml", "image/jpeg"})
+_FOLDED_TAG = "hide-input"
+#: A stylesheet link to Font Awesome on another host (what matplotlib's ``to_jshtml`` writes).
+_REMOTE_FONT_AWESOME = re.compile(
+    r"<link\b[^>]*\bhref=[\"']https?://[^\"']*font-?awesome[^\"']*[\"'][^>]*>\s*", re.IGNORECASE
+)
+#: A file the README shows on the landing page: ``src="figures/..."``.
+_README_PICTURE = re.compile(r"""\bsrc=["'](figures/[^"']+)["']""")
+
+_RUN_IT_YOURSELF = """\
+:::{{admonition}} Run this notebook yourself
+:class: tip
+{downloads} The notebooks use the repository's `eulerlib`: from the top folder of a copy of the
+repository, this command installs it and opens the course in JupyterLab.
+
+```bash
+{command}
+```
+:::
+"""
+_BOTH_EDITIONS = (
+    "Download the [teacher's edition](path:{teacher}) (worked solutions and outputs included) "
+    "or the [student copy](path:{student}) (exercises to fill in)."
+)
+_ONE_EDITION = "Download [this notebook](path:{teacher})."
+_WIDGET_NOTE = (
+    "*A picture of the controls in their first state: to move them, run this notebook in "
+    "JupyterLab, as the box at the top of the page says.*"
+)
+
+
+@dataclass(frozen=True)
+class SiteBuild:
+    """What :func:`build_site` made.
+
+    Attributes
+    ----------
+    out : Path
+        The folder of the site; ``index.html`` is its landing page.
+    pages : tuple of str
+        The notebook pages in reading order, as paths of the HTML files relative to ``out``.
+    warnings : tuple of str
+        The warnings Sphinx reported, one per entry (none for a clean build).
+    seconds : float
+        How long the build took.
+    """
+
+    out: Path
+    pages: tuple[str, ...]
+    warnings: tuple[str, ...]
+    seconds: float
+
+
+def jupyterlab_command(readme: str) -> str:
+    """The README's one-line command that installs the course and opens it in JupyterLab.
+
+    Raises
+    ------
+    ValueError
+        If no line of a ``bash`` block of the README opens ``notebooks/`` in JupyterLab.
+
+    Examples
+    --------
+    >>> jupyterlab_command("```bash\\npip install x && jupyter lab notebooks/\\n```\\n")
+    'pip install x && jupyter lab notebooks/'
+    """
+    for block in re.findall(r"```bash\n(.*?)```", readme, flags=re.DOTALL):
+        for line in block.splitlines():
+            if "jupyter lab notebooks/" in line:
+                return str(line).strip()
+    raise ValueError("the README shows no command that opens notebooks/ in JupyterLab")
+
+
+def course_pages(notebook_folder: Path) -> list[Path]:
+    """The notebooks of the course in reading order: numbered ones first, then the others."""
+    notebooks = sorted(notebook_folder.glob("*.ipynb"))
+    numbered = [path for path in notebooks if re.match(r"\d+_", path.name)]
+    return numbered + [path for path in notebooks if path not in numbered]
+
+
+def table_of_contents(pages: list[str]) -> dict[str, Any]:
+    """The book's table of contents (``_toc.yml``) for notebook pages given in reading order.
+
+    Numbered notebooks (``notebooks/01_...``) form the part "The course", the others (the
+    glossary) the part "Reference"; the landing page ``index`` is the root.
+
+    Examples
+    --------
+    >>> toc = table_of_contents(["notebooks/01_a", "notebooks/glossary"])
+    >>> [part["caption"] for part in toc["parts"]], toc["parts"][1]["chapters"]
+    (['The course', 'Reference'], [{'file': 'notebooks/glossary'}])
+    """
+    numbered = [page for page in pages if re.match(r"\d+_", Path(page).name)]
+    others = [page for page in pages if page not in numbered]
+    parts = [("The course", numbered), ("Reference", others)]
+    return {
+        "format": "jb-book",
+        "root": "index",
+        "parts": [
+            {"caption": caption, "chapters": [{"file": page} for page in chapter]}
+            for caption, chapter in parts
+            if chapter
+        ],
+    }
+
+
+def prepare_notebook(
+    notebook: Any, *, teacher: str, student: str | None, command: str, name: str = "notebook"
+) -> Any:
+    """A copy of a course notebook made ready for its page on the website.
+
+    Parameters
+    ----------
+    notebook : nbformat.NotebookNode
+        The teacher's edition, as committed; it is left unchanged.
+    teacher, student : str
+        Paths of the two downloads relative to the notebook's page; ``student`` is None for a
+        notebook without worked solutions (the glossary), which is offered once.
+    command : str
+        The command that opens the course in JupyterLab (:func:`jupyterlab_command`).
+    name : str, optional
+        The notebook's file name, for error messages.
+
+    Returns
+    -------
+    nbformat.NotebookNode
+        The page's notebook: the "Run this notebook yourself" box after the title cell, worked
+        solutions folded, widgets replaced by their stored pictures (each followed by a note
+        on running it live) and no widget state, no Font Awesome from another host.
+
+    Raises
+    ------
+    ValueError
+        If a widget is stored without a picture to show in its place.
+    """
+    page = copy.deepcopy(notebook)
+    page.metadata.pop("widgets", None)
+    cells = []
+    for index, cell in enumerate(page.cells):
+        cells.append(cell)
+        if cell.cell_type != "code":
+            continue
+        tags = cell.metadata.setdefault("tags", [])
+        if SOLUTION_TAG in tags:
+            if _FOLDED_TAG not in tags:
+                tags.append(_FOLDED_TAG)
+            cell.metadata["mystnb"] = {
+                "code_prompt_show": "Show the worked solution",
+                "code_prompt_hide": "Hide the worked solution",
+            }
+        if _replace_widgets(cell, f"{name}, cell {index}"):
+            cells.append(nbformat.v4.new_markdown_cell(_WIDGET_NOTE))
+    downloads = (
+        _BOTH_EDITIONS.format(teacher=teacher, student=student)
+        if student is not None
+        else _ONE_EDITION.format(teacher=teacher)
+    )
+    box = nbformat.v4.new_markdown_cell(
+        _RUN_IT_YOURSELF.format(downloads=downloads, command=command)
+    )
+    title_first = bool(cells) and cells[0].cell_type == "markdown" and cells[0].source[:1] == "#"
+    cells.insert(1 if title_first else 0, box)
+    page.cells = cells
+    for position, cell in enumerate(page.cells):  # unique ids, by position
+        cell["id"] = f"cell-{position:03d}"
+    return page
+
+
+def _replace_widgets(cell: Any, where: str) -> bool:
+    """Drop widget views (keeping their pictures) and remote Font Awesome from a cell's outputs.
+
+    Returns True when the cell showed a widget.
+    """
+    widget = False
+    for output in cell.get("outputs", []):
+        data = output.get("data", {})
+        if _WIDGET_VIEW in data:
+            if not _PICTURES & set(data):
+                raise ValueError(f"{where} shows a widget without a stored picture to show instead")
+            del data[_WIDGET_VIEW]
+            widget = True
+        if "text/html" in data:
+            html = data["text/html"]
+            text = "".join(html) if isinstance(html, list) else html
+            data["text/html"] = _REMOTE_FONT_AWESOME.sub("", text)
+    return widget
+
+
+def _stage(root: Path, stage: Path) -> tuple[list[str], list[str]]:
+    """Copy and prepare the book's sources in ``stage``.
+
+    Returns the notebook pages in reading order, and warnings about the README's course map.
+    """
+    site, notebook_folder = root / SITE_FOLDER, root / "notebooks"
+    for folder in (site, notebook_folder):
+        if not folder.is_dir():
+            raise ValueError(
+                f"no {folder.name}/ folder in {root.resolve()}: build the site from the top "
+                "folder of the repository (the course is not part of the installed package)"
+            )
+    readme = (root / "README.md").read_text(encoding="utf-8")
+    command = jupyterlab_command(readme)
+    shutil.copytree(site, stage, dirs_exist_ok=True)
+    (stage / "README.md").write_text(readme, encoding="utf-8")
+    warnings = []
+    for picture in sorted(set(_README_PICTURE.findall(readme))):
+        if not (root / picture).is_file():
+            warnings.append(f"README.md: WARNING: the course map shows {picture}, which is missing")
+            continue
+        target = stage / "_extra" / picture
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(root / picture, target)
+    (stage / "_extra").mkdir(exist_ok=True)
+    teacher_folder = stage / "downloads" / "teacher"
+    student_folder = stage / "downloads" / "student"
+    for folder in (stage / "notebooks", teacher_folder, student_folder):
+        folder.mkdir(parents=True, exist_ok=True)
+    pages = []
+    for path in course_pages(notebook_folder):
+        notebook = read_notebook(path)
+        shutil.copyfile(path, teacher_folder / path.name)
+        has_solutions = any(
+            SOLUTION_TAG in cell.metadata.get("tags", []) for cell in notebook.cells
+        )
+        if has_solutions:
+            write_notebook(student_copy(notebook), student_folder / path.name)
+        page = prepare_notebook(
+            notebook,
+            teacher=f"../downloads/teacher/{path.name}",
+            student=f"../downloads/student/{path.name}" if has_solutions else None,
+            command=command,
+            name=path.name,
+        )
+        write_notebook(page, stage / "notebooks" / path.name)
+        pages.append(f"notebooks/{path.stem}")
+    toc = json.dumps(table_of_contents(pages), indent=2)  # JSON is YAML
+    (stage / "_toc.yml").write_text(toc + "\n", encoding="utf-8")
+    return pages, warnings
+
+
+def build_site(root: str | Path = ".", out: str | Path | None = None) -> SiteBuild:
+    """Build the course website from the repository at ``root`` into ``out``.
+
+    Parameters
+    ----------
+    root : str or Path, optional
+        The top folder of the repository (``site/``, ``notebooks/``, ``figures/``, README).
+    out : str or Path, optional
+        The folder for the site, ``build/site`` of ``root`` by default. A site built before is
+        replaced; any other folder that is not empty is refused.
+
+    Returns
+    -------
+    SiteBuild
+        The output folder, the notebook pages, Sphinx's warnings and the time taken.
+
+    Raises
+    ------
+    ValueError
+        If ``root`` is not the repository, ``out`` holds something else than a site, a widget
+        has no stored picture, or Sphinx fails.
+    """
+    start = time.perf_counter()
+    root = Path(root)
+    out = Path(out) if out is not None else root / DEFAULT_OUT
+    if out.exists() and not out.is_dir():
+        raise ValueError(f"{out} is a file, not a folder for the site")
+    if out.is_dir() and any(out.iterdir()) and not (out / ".buildinfo").is_file():
+        raise ValueError(f"{out} is not empty and holds no site built before; choose another --out")
+
+    from jupyter_book.config import get_final_config
+    from jupyter_book.sphinx import build_sphinx
+
+    with tempfile.TemporaryDirectory(prefix="eulerlib-site-") as temporary:
+        stage, html = Path(temporary) / "book", Path(temporary) / "html"
+        pages, readme_warnings = _stage(root, stage)
+        config = stage / "_config.yml"
+        overrides: dict[str, Any] = {
+            "external_toc_path": (stage / "_toc.yml").as_posix(),
+            "latex_individualpages": False,
+        }
+        # Jupyter Book always loads sphinx-thebe, whose script (declared twice on every page,
+        # an error in the console) would fetch thebe from a CDN when clicked; the site has no
+        # live cells, so the extension is left out.
+        sphinx_config, _ = get_final_config(
+            user_yaml=config, cli_config=dict(overrides), sourcedir=stage
+        )
+        overrides["extensions"] = [
+            name for name in sphinx_config["extensions"] if name not in _LEFT_OUT_EXTENSIONS
+        ]
+        log = io.StringIO()
+        with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(log):
+            result = build_sphinx(
+                stage,
+                html,
+                noconfig=True,
+                path_config=str(config),
+                confoverrides=overrides,
+                doctreedir=Path(temporary) / "doctrees",
+                freshenv=True,
+            )
+        if result != 0:
+            raise ValueError(f"the site did not build: {log.getvalue().strip() or result}")
+        if out.exists():
+            shutil.rmtree(out)
+        out.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copytree(html, out)
+    messages = _ANSI_COLOUR.sub("", log.getvalue()).replace(f"{stage}/", "")
+    warnings = tuple(readme_warnings) + tuple(
+        line.strip() for line in messages.splitlines() if "WARNING" in line or "ERROR" in line
+    )
+    return SiteBuild(
+        out=out,
+        pages=tuple(f"{page}.html" for page in pages),
+        warnings=warnings,
+        seconds=time.perf_counter() - start,
+    )

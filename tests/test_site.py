@@ -1,0 +1,552 @@
+"""The course website: built by ``eulerlib site build``, read in a real browser with no network.
+
+Two groups of tests.
+
+* **Preparing the pages** (:mod:`eulerlib.course.site`): a notebook made ready for the web, the
+  table of contents, the README's JupyterLab command. They need the notebook tools only, so they
+  run with the rest of the suite.
+* **The site itself.** The documented command builds it once for this module into a temporary
+  folder; a small HTTP server serves that folder on the loopback interface, and the system's
+  Chromium, driven headless by Playwright (never a downloaded browser), opens every page. A page
+  fails when it asks any other host for anything (such requests are refused, as with the network
+  off, and listed), when a request fails or an image does not load, when math is left untypeset
+  (the math elements of the HTML against MathJax's containers, TeX errors, and ``$...$`` left in
+  the text), or when the console shows an error. Without the ``site`` extra or a ``chromium``
+  executable these tests are skipped, with the reason; ``.ci/run`` sets ``EULERLIB_SITE_TEST``
+  to ``required``, which turns the skip into a failure.
+
+Two full-page screenshots (the landing page, and the page of a notebook that shows a widget)
+are saved for a human to look at: into the folder named by ``EULERLIB_SITE_SCREENSHOTS``, or
+into the test's temporary folder.
+"""
+
+from __future__ import annotations
+
+import functools
+import html
+import http.server
+import importlib.util
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+import urllib.request
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from html.parser import HTMLParser
+from pathlib import Path
+from typing import Any
+from urllib.parse import unquote, urljoin, urlsplit
+
+import nbformat
+import pytest
+
+from eulerlib.course.site import (
+    build_site,
+    course_pages,
+    jupyterlab_command,
+    prepare_notebook,
+    table_of_contents,
+)
+from eulerlib.course.student import student_copy
+
+REPO = Path(__file__).resolve().parents[1]
+README = (REPO / "README.md").read_text(encoding="utf-8")
+NOTEBOOKS = course_pages(REPO / "notebooks")
+NOTEBOOK_PAGES = [f"notebooks/{path.stem}.html" for path in NOTEBOOKS]
+#: Every page of the site: the landing page, one page per notebook, and the search page.
+PAGES = ["index.html", *NOTEBOOK_PAGES, "search.html"]
+notebook_pages = pytest.mark.parametrize(
+    ("name", "path"), list(zip(NOTEBOOK_PAGES, NOTEBOOKS, strict=True)), ids=NOTEBOOK_PAGES
+)
+WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
+PICTURES = ("image/png", "image/svg+xml", "image/jpeg")
+LOOPBACK = "127.0.0.1"
+#: Chromium's own background traffic off (the machine's network is closed to it anyway).
+CHROMIUM_ARGS = [
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-first-run",
+]
+
+
+def page_text(source: str) -> str:
+    """The text of an HTML page, tags removed and entities decoded."""
+    return html.unescape(re.sub(r"<[^>]+>", "", source))
+
+
+def read(path: Path) -> Any:
+    return nbformat.read(str(path), as_version=4)
+
+
+def tags(cell: Any) -> list[str]:
+    return list(cell.get("metadata", {}).get("tags", []))
+
+
+def solution_count(notebook: Any) -> int:
+    return sum("solution" in tags(cell) for cell in notebook.cells)
+
+
+def picture_count(notebook: Any) -> int:
+    return sum(
+        any(mime in output.get("data", {}) for mime in PICTURES)
+        for cell in notebook.cells
+        for output in cell.get("outputs", [])
+    )
+
+
+def shows_widget(notebook: Any) -> bool:
+    return any(
+        WIDGET_VIEW in output.get("data", {})
+        for cell in notebook.cells
+        for output in cell.get("outputs", [])
+    )
+
+
+# --- preparing the pages ------------------------------------------------------------------------
+
+
+def small_notebook() -> Any:
+    new = nbformat.v4
+    widget = new.new_output(
+        "display_data",
+        data={WIDGET_VIEW: {"model_id": "abc"}, "image/png": "iVBORw0K", "text/plain": "Box()"},
+    )
+    player = new.new_output(
+        "display_data",
+        data={
+            "text/html": '<link rel="stylesheet"\nhref="https://maxcdn.example/font-awesome/4.4.0/'
+            'css/font-awesome.min.css">\n<i class="fa fa-play"></i>'
+        },
+    )
+    cells = [
+        new.new_markdown_cell("# 99 · A title\n\nWhy it matters."),
+        new.new_code_cell("explorer()", outputs=[widget]),
+        new.new_code_cell("HTML(animation.to_jshtml())", outputs=[player]),
+        new.new_code_cell("answer_1 = ...", metadata={"tags": ["exercise"]}),
+        new.new_code_cell("answer_1 = 42", metadata={"tags": ["solution"]}),
+    ]
+    notebook = new.new_notebook(cells=cells)
+    notebook.metadata["widgets"] = {"application/vnd.jupyter.widget-state+json": {"state": {}}}
+    return notebook
+
+
+def test_prepared_page_offers_both_editions_and_the_command_after_the_title() -> None:
+    page = prepare_notebook(
+        small_notebook(), teacher="t/99.ipynb", student="s/99.ipynb", command="jupyter lab x/"
+    )
+    box = page.cells[1]
+    assert page.cells[0].source.startswith("# 99 · A title")
+    assert box.cell_type == "markdown"
+    assert "Run this notebook yourself" in box.source
+    assert "[teacher's edition](path:t/99.ipynb)" in box.source
+    assert "[student copy](path:s/99.ipynb)" in box.source
+    assert "```bash\njupyter lab x/\n```" in box.source
+
+
+def test_prepared_page_of_a_notebook_without_solutions_offers_it_once() -> None:
+    page = prepare_notebook(
+        nbformat.v4.new_notebook(cells=[nbformat.v4.new_markdown_cell("# Glossary")]),
+        teacher="t/glossary.ipynb",
+        student=None,
+        command="jupyter lab x/",
+    )
+    assert "[this notebook](path:t/glossary.ipynb)" in page.cells[1].source
+    assert "student copy" not in page.cells[1].source
+
+
+def test_prepared_page_folds_solutions_and_shows_widget_pictures() -> None:
+    notebook = small_notebook()
+    before = nbformat.writes(notebook)
+    page = prepare_notebook(notebook, teacher="t", student="s", command="c")
+    assert nbformat.writes(notebook) == before  # the committed notebook is left alone
+    assert "widgets" not in page.metadata
+    solution = next(cell for cell in page.cells if "solution" in tags(cell))
+    assert "hide-input" in tags(solution)
+    assert solution.metadata["mystnb"]["code_prompt_show"] == "Show the worked solution"
+    explorer = next(i for i, cell in enumerate(page.cells) if cell.source == "explorer()")
+    assert set(page.cells[explorer].outputs[0].data) == {"image/png", "text/plain"}
+    note = page.cells[explorer + 1]
+    assert note.cell_type == "markdown" and "run this notebook in" in note.source
+    player = next(cell for cell in page.cells if "to_jshtml" in cell.source)
+    shown = player.outputs[0].data["text/html"]
+    assert "font-awesome" not in shown and shown.startswith('<i class="fa fa-play">')
+    assert len({cell.id for cell in page.cells}) == len(page.cells)
+    nbformat.validate(page)
+
+
+def test_a_widget_without_a_picture_is_refused() -> None:
+    output = nbformat.v4.new_output("display_data", data={WIDGET_VIEW: {}, "text/plain": "Box()"})
+    notebook = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell("w", outputs=[output])])
+    with pytest.raises(ValueError, match="cell 0 shows a widget without a stored picture"):
+        prepare_notebook(notebook, teacher="t", student=None, command="c", name="99_x.ipynb")
+
+
+def test_table_of_contents_follows_the_notebooks_and_ends_with_the_glossary() -> None:
+    pages = [f"notebooks/{path.stem}" for path in NOTEBOOKS]
+    toc = table_of_contents(pages)
+    chapters = [chapter["file"] for part in toc["parts"] for chapter in part["chapters"]]
+    assert chapters == pages
+    numbered = [path.stem for path in NOTEBOOKS if re.match(r"\d\d_", path.name)]
+    assert [Path(page).name for page in chapters[: len(numbered)]] == numbered
+    assert chapters[-1] == "notebooks/glossary"
+
+
+def test_the_pages_show_the_readme_command_that_opens_jupyterlab() -> None:
+    command = jupyterlab_command(README)
+    assert command.startswith("python3 -m venv .venv") and command.endswith(
+        "jupyter lab notebooks/"
+    )
+    with pytest.raises(ValueError, match="no command that opens notebooks/"):
+        jupyterlab_command("# no commands here\n")
+
+
+def test_the_site_is_not_built_over_another_folder_or_a_file(tmp_path: Path) -> None:
+    (tmp_path / "notes.txt").write_text("a teacher's notes", encoding="utf-8")
+    with pytest.raises(ValueError, match="not empty and holds no site built before"):
+        build_site(REPO, tmp_path)
+    with pytest.raises(ValueError, match="is a file, not a folder"):
+        build_site(REPO, tmp_path / "notes.txt")
+    assert [path.name for path in tmp_path.iterdir()] == ["notes.txt"]
+
+
+def test_the_site_command_names_its_extra(tmp_path: Path) -> None:
+    code = (
+        "import sys\nsys.modules['jupyter_book'] = None\n"
+        "from eulerlib.cli import main\n"
+        f"raise SystemExit(main(['site', 'build', '--out', {str(tmp_path / 'site')!r}]))\n"
+    )
+    result = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, cwd=REPO, check=False
+    )
+    assert result.returncode == 1
+    assert result.stderr.splitlines() == [
+        "eulerlib site: error: eulerlib site build needs jupyter_book (the site extra): "
+        'pip install "eulerlib[site]"'
+    ]
+    assert not (tmp_path / "site").exists()
+
+
+# --- the site, built and read in a browser -------------------------------------------------------
+
+
+def chromium_executable() -> str | None:
+    """The system's Chromium: ``EULERLIB_CHROMIUM``, else ``chromium`` on the PATH."""
+    named = os.environ.get("EULERLIB_CHROMIUM")
+    if named:
+        return named if Path(named).is_file() else None
+    return shutil.which("chromium") or shutil.which("chromium-browser")
+
+
+def missing_prerequisite() -> str | None:
+    """Why the site cannot be built and read here, or None."""
+    for module in ("jupyter_book", "sphinx-mathjax-offline", "playwright"):
+        if importlib.util.find_spec(module) is None:
+            return f'the site extra is not installed (no {module}): pip install -e ".[site]"'
+    if chromium_executable() is None:
+        return "no Chromium: install Debian's chromium package, or name one in EULERLIB_CHROMIUM"
+    return None
+
+
+@dataclass
+class Site:
+    """The built site and where it is served."""
+
+    folder: Path
+    url: str
+    build_output: str
+    build_errors: str
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Site]:
+    reason = missing_prerequisite()
+    if reason is not None:
+        if os.environ.get("EULERLIB_SITE_TEST") == "required":
+            pytest.fail(reason)
+        pytest.skip(reason)
+    folder = tmp_path_factory.mktemp("site") / "html"
+    result = subprocess.run(
+        [sys.executable, "-m", "eulerlib", "site", "build", "--out", str(folder)],
+        capture_output=True,
+        text=True,
+        cwd=REPO,
+        check=False,
+        timeout=600,
+    )
+    assert result.returncode == 0, result.stderr
+
+    class QuietHandler(http.server.SimpleHTTPRequestHandler):
+        def log_message(self, format: str, *args: Any) -> None:
+            pass
+
+    handler = functools.partial(QuietHandler, directory=str(folder))
+    server = http.server.ThreadingHTTPServer((LOOPBACK, 0), handler)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        yield Site(
+            folder, f"http://{LOOPBACK}:{server.server_address[1]}/", result.stdout, result.stderr
+        )
+    finally:
+        server.shutdown()
+        server.server_close()
+
+
+@dataclass
+class Visit:
+    """What happened while one page was open."""
+
+    refused: list[str] = field(default_factory=list)
+    failed: list[str] = field(default_factory=list)
+    console_errors: list[str] = field(default_factory=list)
+    facts: dict[str, Any] = field(default_factory=dict)
+    source: str = ""
+
+
+#: Collected in the page once MathJax has finished.
+FACTS = """async () => {
+  if (window.MathJax && window.MathJax.startup) { await window.MathJax.startup.promise; }
+  const text = (root) => {
+    const copy = root.cloneNode(true);
+    copy.querySelectorAll("mjx-container, pre, code, script, style").forEach((e) => e.remove());
+    return copy.textContent;
+  };
+  const folds = [...document.querySelectorAll("details")].filter(
+    (d) => (d.querySelector("summary") || {}).textContent.includes("worked solution"));
+  return {
+    typeset: document.querySelectorAll("mjx-container").length,
+    texErrors: [...document.querySelectorAll("mjx-merror")].map((e) => e.textContent),
+    text: text(document.querySelector("main") || document.body),
+    brokenImages: [...document.images]
+      .filter((i) => !(i.complete && i.naturalWidth > 0))
+      .map((i) => i.currentSrc || i.src),
+    outputPictures: [...document.querySelectorAll(".cell_output img")]
+      .filter((i) => !i.closest(".text_html")).length,
+    folds: folds.map((d) => ({
+      open: d.open,
+      visible: [...d.querySelectorAll("pre")].some((p) => p.checkVisibility()),
+    })),
+    navigation: [...document.querySelectorAll("nav.bd-docs-nav a.reference.internal")]
+      .map((a) => new URL(a.href).pathname),
+  };
+}"""
+
+
+def watch(page: Any, visit: Visit) -> None:
+    """Record into ``visit`` what ``page`` asks for and what its console says.
+
+    Requests to any host but the loopback interface are refused, as with the network off, and
+    listed.
+    """
+
+    def route(request_route: Any) -> None:
+        url = request_route.request.url
+        if urlsplit(url).hostname == LOOPBACK:
+            request_route.continue_()
+        else:
+            visit.refused.append(url)
+            request_route.abort()
+
+    def console(message: Any) -> None:
+        if message.type == "error":
+            visit.console_errors.append(message.text)
+
+    def response(reply: Any) -> None:
+        if reply.status >= 400:
+            visit.failed.append(f"{reply.status} {reply.url}")
+
+    def request_failed(request: Any) -> None:
+        if urlsplit(request.url).hostname == LOOPBACK:  # the refused ones are listed already
+            visit.failed.append(f"{request.failure} {request.url}")
+
+    page.route("**/*", route)
+    page.on("console", console)
+    page.on("pageerror", lambda error: visit.console_errors.append(str(error)))
+    page.on("response", response)
+    page.on("requestfailed", request_failed)
+
+
+@pytest.fixture(scope="module")
+def visits(site: Site, tmp_path_factory: pytest.TempPathFactory) -> dict[str, Visit]:
+    """Open every page once in headless Chromium; take two screenshots."""
+    from playwright.sync_api import sync_playwright
+
+    shots = Path(os.environ.get("EULERLIB_SITE_SCREENSHOTS") or tmp_path_factory.mktemp("shots"))
+    shots.mkdir(parents=True, exist_ok=True)
+    widget_pages = [
+        page
+        for page, path in zip(NOTEBOOK_PAGES, NOTEBOOKS, strict=True)
+        if shows_widget(read(path))
+    ]
+    second = (widget_pages or NOTEBOOK_PAGES)[0]
+    screenshots = {"index.html": "landing.png", second: Path(second).with_suffix(".png").name}
+    arguments = [*CHROMIUM_ARGS]
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        arguments.append("--no-sandbox")  # Chromium refuses to run as root otherwise
+    results: dict[str, Visit] = {}
+    with tempfile.TemporaryDirectory() as profile, sync_playwright() as playwright:
+        context = playwright.chromium.launch_persistent_context(
+            profile,  # a fresh --user-data-dir
+            executable_path=chromium_executable(),
+            headless=True,
+            args=arguments,
+            viewport={"width": 1280, "height": 900},
+        )
+        for name in PAGES:
+            visit = results[name] = Visit()
+            page = context.new_page()
+            watch(page, visit)
+            response = page.goto(site.url + name, wait_until="load")
+            assert response is not None
+            visit.source = response.text()
+            visit.facts = page.evaluate(FACTS)
+            page.wait_for_load_state("networkidle")
+            if name in screenshots:
+                page.screenshot(path=str(shots / screenshots[name]), full_page=True)
+            page.close()
+        context.close()
+    print(f"screenshots of the site: {', '.join(str(shots / n) for n in screenshots.values())}")
+    return results
+
+
+def test_the_build_is_clean(site: Site) -> None:
+    assert site.build_errors == "", "Sphinx warned:\n" + site.build_errors
+    assert f"built {len(NOTEBOOKS)} notebook pages" in site.build_output
+
+
+def test_every_page_is_opened(site: Site) -> None:
+    built = sorted(
+        path.relative_to(site.folder).as_posix()
+        for path in site.folder.rglob("*.html")
+        if not path.relative_to(site.folder).parts[0].startswith("_")
+    )
+    assert built == sorted(PAGES)
+
+
+@pytest.mark.parametrize("name", PAGES)
+def test_page_asks_no_other_host_and_loads_everything(visits: dict[str, Visit], name: str) -> None:
+    visit = visits[name]
+    assert visit.refused == [], "requests to other hosts"
+    assert visit.failed == [], "failed requests"
+    assert visit.facts["brokenImages"] == [], "images that did not load"
+    assert visit.console_errors == [], "errors in the console"
+
+
+@pytest.mark.parametrize("name", PAGES)
+def test_page_math_is_typeset(visits: dict[str, Visit], name: str) -> None:
+    visit = visits[name]
+    math_elements = len(re.findall(r'class="[^"]*\bmath\b[^"]*"', visit.source))
+    assert visit.facts["typeset"] == math_elements
+    assert visit.facts["texErrors"] == []
+    left = re.findall(r"\$[^$\s][^$]*\$|\\\(|\\\[|\\begin\{", visit.facts["text"])
+    assert left == [], "TeX left in the text"
+
+
+@notebook_pages
+def test_page_folds_worked_solutions_and_shows_pictures(
+    visits: dict[str, Visit], name: str, path: Path
+) -> None:
+    notebook, visit = read(path), visits[name]
+    folds = visit.facts["folds"]
+    assert len(folds) == solution_count(notebook)
+    assert all(not fold["open"] and not fold["visible"] for fold in folds)
+    assert visit.facts["outputPictures"] == picture_count(notebook)
+    assert "widget-view+json" not in visit.source and "widget-state+json" not in visit.source
+    assert jupyterlab_command(README) in page_text(visit.source)
+
+
+def test_pages_are_in_course_order(visits: dict[str, Visit]) -> None:
+    navigation = [path.lstrip("/") for path in visits["index.html"].facts["navigation"]]
+    shown = [path for path in navigation if path in NOTEBOOK_PAGES]
+    assert shown == NOTEBOOK_PAGES
+
+
+class Links(HTMLParser):
+    """The ``href`` and ``src`` of a page, and the ids it defines."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.targets: list[str] = []
+        self.ids: set[str] = set()
+        self.downloads: dict[str, str] = {}
+        self._download: str | None = None
+
+    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+        values = dict(attrs)
+        if values.get("id"):
+            self.ids.add(str(values["id"]))
+        for key in ("href", "src"):
+            if values.get(key):
+                self.targets.append(str(values[key]))
+        if tag == "a" and "download" in (values.get("class") or ""):
+            self._download = str(values["href"])
+
+    def handle_data(self, data: str) -> None:
+        if self._download is not None and data.strip():
+            self.downloads[data.strip()] = self._download
+            self._download = None
+
+
+def links_of(site: Site, name: str) -> Links:
+    parser = Links()
+    parser.feed((site.folder / name).read_text(encoding="utf-8"))
+    return parser
+
+
+@pytest.mark.parametrize("name", PAGES)
+def test_local_links_and_anchors_exist(site: Site, name: str) -> None:
+    broken = []
+    for target in links_of(site, name).targets:
+        parts = urlsplit(target)
+        if parts.scheme or target.startswith(("#", "//")):
+            continue
+        resolved = urlsplit(urljoin(f"http://site/{name}", target))
+        path = site.folder / unquote(resolved.path.lstrip("/"))
+        if path.is_dir():
+            path = path / "index.html"
+        if not path.is_file():
+            broken.append(target)
+        elif resolved.fragment and path.suffix == ".html":
+            if (
+                resolved.fragment
+                not in links_of(site, path.relative_to(site.folder).as_posix()).ids
+            ):
+                broken.append(target)
+    assert broken == []
+
+
+@notebook_pages
+def test_page_offers_the_teacher_edition_and_the_student_copy(
+    site: Site, name: str, path: Path
+) -> None:
+    downloads = links_of(site, name).downloads
+
+    def fetch(label: str) -> bytes:
+        with urllib.request.urlopen(urljoin(site.url + name, downloads[label])) as reply:
+            return bytes(reply.read())
+
+    committed = path.read_bytes()
+    if solution_count(read(path)):
+        assert set(downloads) == {"teacher’s edition", "student copy"}
+        assert fetch("teacher’s edition") == committed
+        student = nbformat.reads(fetch("student copy").decode("utf-8"), as_version=4)
+        assert student == student_copy(read(path))
+        assert solution_count(student) == 0
+    else:
+        assert set(downloads) == {"this notebook"}
+        assert fetch("this notebook") == committed
+
+
+def test_landing_page_is_the_readme_course_map(site: Site) -> None:
+    landing = (site.folder / "index.html").read_text(encoding="utf-8")
+    course = README.split("## The course", 1)[1].split("\n## ", 1)[0]
+    for notebook in re.findall(r"\]\(notebooks/([^)#]+)\.ipynb\)", course):
+        assert f'href="notebooks/{notebook}.html"' in landing
+    for picture in re.findall(r'src="(figures/[^"]+)"', course):
+        assert f'src="{picture}"' in landing
+    assert jupyterlab_command(README) in page_text(landing)
