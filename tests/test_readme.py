@@ -53,3 +53,25 @@ def test_readme_command_lines_are_commands_the_cli_takes() -> None:
             parser.parse_args(shlex.split(command)[1:])
         except SystemExit:
             pytest.fail(f"README shows a command the CLI does not take: {command.strip()}")
+
+
+def test_the_api_table_lists_every_public_name_with_its_keywords() -> None:
+    import inspect
+
+    import eulerlib
+
+    section = README.split("### What is in it", 1)[1].split("\n### ", 1)[0]
+    rows = [line for line in section.splitlines() if line.startswith("|")]
+    for name in eulerlib.__all__:
+        mentioned = [row for row in rows if f"`{name}" in row]
+        assert mentioned, f"{name} is not in the README's API table"
+        value = getattr(eulerlib, name)
+        if inspect.isfunction(value):
+            keywords = [
+                p.name
+                for p in inspect.signature(value).parameters.values()
+                if p.kind is inspect.Parameter.KEYWORD_ONLY
+            ]
+            row = next(row for row in mentioned if f"`{name}(" in row)
+            for keyword in keywords:
+                assert f"`{keyword}`" in row, f"{name}: keyword {keyword} missing from its row"
