@@ -256,7 +256,9 @@ def plot_axis_paths(
     -------
     matplotlib.figure.Figure
         A pyplot figure with one 3D axes: the sphere, the fixed x, y, z axes as short dashed
-        lines, and the paths in order.
+        lines, and the paths in order. The box, ticks and panes of the axes are hidden (the
+        dashed lines show the frame); the axes keep the course's view, which ``view_init``
+        changes.
 
     Raises
     ------
@@ -286,6 +288,8 @@ def plot_axis_paths(
     size = check_figsize(figsize)
     with pyplot_figure(size) as fig:
         ax = add_3d_axes(fig, (1, 1, 1), 1.1, heading)
+        ax.set_axis_off()  # the sphere and its own x, y, z lines show the frame
+        ax.set_box_aspect((1, 1, 1), zoom=1.3)  # without the box, the sphere may fill the axes
         _wire_sphere(ax)
         for index in range(3):
             end = 1.1 * np.eye(3)[index]
