@@ -18,14 +18,14 @@ from eulerlib import matrix_to_rotvec, rotvec_to_matrix
 from .judges import ArrayJudge, Mistake, NumberJudge
 from .key import Example, Exercise
 
-# --- 10.1: the rotation vector of a matrix --------------------------------------------------------
+# --- 10.1: the rotation vector of a matrix -------------------------------------------------------
 
 _ROTVEC = np.array([0.37, -0.86, 0.52])  # radians; the turn the learner's matrix makes
 _ANGLE = float(np.linalg.norm(_ROTVEC))
 _AXIS = _ROTVEC / _ANGLE
 
 
-# --- 10.3: the axis of a turn by π − 1e-7 ---------------------------------------------------------
+# --- 10.3: the axis of a turn by π − 1e-7 --------------------------------------------------------
 
 _HALF_AXIS = np.array([-3.0, 4.0, 5.5]) / math.hypot(3.0, 4.0, 5.5)  # the unit axis
 _SHORT_OF_HALF = 1e-7  # the turn is by π minus this, in radians

@@ -18,7 +18,7 @@ from eulerlib import euler_to_quaternion
 from .judges import Mistake, NumberJudge, QuaternionJudge
 from .key import Example, Exercise
 
-# --- 11.1: 60° about the axis (0, 3, 4) -----------------------------------------------------------
+# --- 11.1: 60° about the axis (0, 3, 4) ----------------------------------------------------------
 
 _AXIS = np.array([0.0, 3.0, 4.0])
 _UNIT = _AXIS / 5.0
@@ -29,13 +29,13 @@ def _scalar_last(angle_half: float, axis: np.ndarray) -> np.ndarray:
     return np.append(math.sin(angle_half) * axis, math.cos(angle_half))
 
 
-# --- 11.2: first 90° about x, then 90° about y ----------------------------------------------------
+# --- 11.2: first 90° about x, then 90° about y ---------------------------------------------------
 
 _Q2 = np.array([0.5, 0.5, -0.5, 0.5])  # (x, y, z, w) of q_y q_x
 _Q2_REVERSED = np.array([0.5, 0.5, 0.5, 0.5])  # q_x q_y: first y, then x
 _SUM = np.array([math.sqrt(0.5), math.sqrt(0.5), 0.0, 2 * math.sqrt(0.5)])  # q_x + q_y
 
-# --- 11.3: a quaternion at gimbal lock ----------------------------------------------------------
+# --- 11.3: a quaternion at gimbal lock -----------------------------------------------------------
 
 _LOCKED = [37.0, 90.0, -71.0]  # yaw, pitch, roll of the quaternion the learner is given
 _Q_LOCK = euler_to_quaternion(_LOCKED, "rose", degrees=True)
