@@ -36,12 +36,14 @@ from eulerlib.plotting import (
     aircraft_segments,
     animate_gimbal_lock,
     draw_aircraft,
+    draw_axis_path,
     draw_frame,
     explorer,
     explorer_state,
     gimbal_ring_normals,
     gimbal_ring_points,
     new_3d_axes,
+    plot_axis_paths,
     plot_body_rotation,
     plot_frames,
     plot_gimbal,
@@ -451,6 +453,93 @@ def test_matrices_can_be_repaired_or_drawn_unchecked() -> None:
     np.testing.assert_allclose(np.asarray(lines[0].get_data_3d())[:, 1], (u @ vt)[:, 0])
 
 
+# --------------------------------------------------------------------------- paths on the sphere
+
+
+@pytest.mark.parametrize(("axis", "column"), [("x", 0), ("Y", 1), (2, 2)])
+def test_draw_axis_path_follows_one_column_of_every_rotation(
+    axis: Any, column: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from eulerlib.plotting import paths
+
+    heads: list[tuple[np.ndarray, np.ndarray]] = []
+    draw_head = paths._arrow_head
+
+    def recording_head(ax: Any, tip: Any, direction: Any, size: float, **style: Any) -> Any:
+        heads.append((tip, direction))
+        return draw_head(ax, tip, direction, size, **style)
+
+    monkeypatch.setattr(paths, "_arrow_head", recording_head)
+    R = np.asarray(Rotation.random(7, random_state=3).as_matrix())
+    ax = new_3d_axes()
+    line, start, head = draw_axis_path(ax, R, axis=axis, color="tab:purple", label="path")
+    np.testing.assert_array_equal(np.asarray(line.get_data_3d()).T, R[:, :, column])
+    np.testing.assert_array_equal(np.asarray(start.get_data_3d()).T, R[:1, :, column])
+    assert line.get_label() == "path" and line.get_color() == "tab:purple"
+    assert start.get_marker() == "o" and start.get_linestyle() == "None"
+    # the arrowhead points at the last sample, along the last step
+    ((tip, direction),) = heads
+    np.testing.assert_array_equal(tip, R[-1, :, column])
+    np.testing.assert_array_equal(direction, R[-1, :, column] - R[-2, :, column])
+    assert head in ax.collections
+
+
+def test_draw_axis_path_dots_every_kth_sample() -> None:
+    R = scipy_matrix("z", np.linspace(0.0, 90.0, 10)[:, None])
+    artists = draw_axis_path(new_3d_axes(), R, dot_every=3)
+    assert len(artists) == 4
+    dots = np.asarray(artists[3].get_data_3d()).T
+    np.testing.assert_allclose(dots, R[::3, :, 0], atol=1e-15)
+    assert len(dots) == 4  # samples 0, 3, 6, 9
+    assert len(draw_axis_path(new_3d_axes(), R)) == 3  # no dots by default
+
+
+def test_plot_axis_paths_draws_each_path_in_its_colour_with_a_legend_inside() -> None:
+    start = np.asarray(Rotation.from_euler("ZYX", [10, 20, 30], degrees=True).as_matrix())
+    end = np.asarray(Rotation.from_euler("ZYX", [120, 40, -30], degrees=True).as_matrix())
+    t = np.linspace(0.0, 1.0, 9)
+    along = np.asarray(
+        (
+            Rotation.from_matrix(start)
+            * Rotation.from_rotvec(
+                t[:, None]
+                * (Rotation.from_matrix(start).inv() * Rotation.from_matrix(end)).as_rotvec()
+            )
+        ).as_matrix()
+    )
+    stepwise = np.asarray(
+        Rotation.from_euler(
+            "ZYX", np.outer(1 - t, [10, 20, 30]) + np.outer(t, [120, 40, -30]), degrees=True
+        ).as_matrix()
+    )
+    fig = plot_axis_paths(np.stack([along, stepwise]), labels=["a", "b"], axis="y")
+    (ax,) = fig.axes
+    paths = {line.get_label(): line for line in ax.get_lines() if line.get_label() in ("a", "b")}
+    np.testing.assert_allclose(np.asarray(paths["a"].get_data_3d()).T, along[:, :, 1], atol=1e-15)
+    np.testing.assert_array_equal(np.asarray(paths["b"].get_data_3d()).T, stepwise[:, :, 1])
+    assert [paths["a"].get_color(), paths["b"].get_color()] == ["tab:orange", "tab:purple"]
+    assert [text.get_text() for text in ax.get_legend().get_texts()] == ["a", "b"]
+    fig.canvas.draw()
+    legend = ax.get_legend().get_window_extent(fig.canvas.get_renderer())
+    assert ax.bbox.x0 <= legend.x0 and legend.x1 <= ax.bbox.x1
+    assert ax.bbox.y0 <= legend.y0 and legend.y1 <= ax.bbox.y1
+    # every point of the sphere's wire lies on the unit sphere
+    wire = [line for line in ax.get_lines() if line.get_color() == "0.82"]
+    assert len(wire) == 11
+    for line in wire:
+        points = np.asarray(line.get_data_3d())
+        np.testing.assert_allclose(np.linalg.norm(points, axis=0), 1.0, atol=1e-15)
+
+
+def test_plot_axis_paths_one_path_without_labels_has_no_legend() -> None:
+    R = scipy_matrix("x", np.linspace(0.0, 60.0, 5)[:, None])
+    fig = plot_axis_paths(R, colors=["k"], axis="z", title="one")
+    (ax,) = fig.axes
+    assert ax.get_legend() is None and ax.get_title() == "one"
+    drawn = [line for line in ax.get_lines() if line.get_color() == "k"]
+    np.testing.assert_array_equal(np.asarray(drawn[0].get_data_3d()).T, R[:, :, 2])
+
+
 # --------------------------------------------------------------------------- bad arguments
 
 NAN, INF = float("nan"), float("inf")
@@ -482,6 +571,10 @@ TITLE = [(1, TypeError), (["t"], TypeError), (b"t", TypeError)]
 COUNT_N = [(2, ValueError), (0, ValueError), (4.0, TypeError), (True, TypeError),
            ("4", TypeError), (None, TypeError)]  # fmt: skip
 NOT_3D = ["a 2D axes", "text", None]
+AXIS = [("w", ValueError), (3, ValueError), (1.0, TypeError), (True, TypeError), (None, TypeError)]
+ONE_PATH = [(np.eye(3), ValueError), (np.stack([REFLECTION] * 2), ValueError),
+            (np.eye(3)[None, None], ValueError), ("R", TypeError), (None, TypeError),
+            (np.full((2, 3, 3), NAN), ValueError)]  # fmt: skip
 
 #: Every parameter of every public plotting function, with its bad values.
 BAD: dict[str, dict[str, list[tuple[Any, type[Exception]]]]] = {
@@ -598,6 +691,43 @@ BAD: dict[str, dict[str, list[tuple[Any, type[Exception]]]]] = {
         ],
         "figsize": FIGSIZE,
     },
+    "draw_axis_path": {
+        "ax": [(value, TypeError) for value in NOT_3D],
+        "rotations": ONE_PATH,
+        "axis": AXIS,
+        "color": COLOR,
+        "label": TITLE,
+        "linewidth": POSITIVE,
+        "linestyle": LINESTYLE,
+        "alpha": ALPHA,
+        "dot_every": [(-1, ValueError), (2.0, TypeError), (True, TypeError), (None, TypeError)],
+        "validate": FLAG,
+        "repair": FLAG,
+        "atol": ATOL,
+    },
+    "plot_axis_paths": {
+        "paths": [
+            (np.eye(3), ValueError),
+            (np.stack([np.eye(3)] * 2)[None, None], ValueError),
+            (np.stack([REFLECTION] * 2), ValueError),
+            ("R", TypeError),
+            (None, TypeError),
+        ],
+        "labels": [(["a", "b"], ValueError), ("a", TypeError), ([1], TypeError)],
+        "axis": AXIS,
+        "colors": [
+            (["r", "g"], ValueError),
+            ("r", TypeError),
+            (["bluish"], ValueError),
+            ([None], TypeError),
+        ],
+        "dot_every": [(-1, ValueError), (0.5, TypeError), (None, TypeError)],
+        "title": TITLE,
+        "figsize": FIGSIZE,
+        "validate": FLAG,
+        "repair": FLAG,
+        "atol": ATOL,
+    },
     "explorer_state": {"angles": ANGLES, "seq": SEQ},
     "explorer": {"seq": SEQ},
     "Explorer": {"seq": SEQ},
@@ -625,6 +755,8 @@ def valid_arguments(name: str) -> dict[str, Any]:
         "gimbal_ring_points": angles,
         "plot_gimbal": angles,
         "animate_gimbal_lock": {"frames": 2},
+        "draw_axis_path": {"ax": new_3d_axes(), "rotations": np.stack([np.eye(3)] * 2)},
+        "plot_axis_paths": {"paths": np.stack([np.eye(3)] * 2)},
         "explorer_state": {"angles": [30.0, 20.0, 10.0]},
         "explorer": {},
         "Explorer": {},
@@ -689,6 +821,11 @@ def test_a_bad_argument_is_named_and_leaves_no_figure_behind(
         ),
         (lambda: plot_body_rotation(np.eye(3)), "eulerlib.plotting.aircraft", "aircraft_lines"),
         (lambda: plot_gimbal([1, 2, 3]), "eulerlib.plotting.gimbal", "_draw_gimbal"),
+        (
+            lambda: plot_axis_paths(np.stack([np.eye(3)] * 2)),
+            "eulerlib.plotting.paths",
+            "path_artists",
+        ),
     ],
 )
 def test_a_figure_is_closed_when_drawing_into_it_fails(
@@ -777,6 +914,7 @@ def test_every_3d_axes_is_labelled_x_y_z() -> None:
         plot_sequence_steps([1, 2, 3]),
         plot_body_rotation(np.eye(3)),
         plot_gimbal([1, 2, 3]),
+        plot_axis_paths(np.stack([np.eye(3)] * 2)),
     ]
     for fig in figures:
         for ax in fig.axes:

@@ -26,28 +26,38 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 from numpy.typing import NDArray
 
 from eulerlib.angular_velocity import angular_velocity_to_euler_rates
-from eulerlib.axis_angle import angle_between, rotvec_to_matrix
+from eulerlib.axis_angle import (
+    angle_between,
+    axis_angle_to_matrix,
+    matrix_to_axis_angle,
+    rotvec_to_matrix,
+)
 from eulerlib.elementary import elementary_rotation, rot_x, rot_z
 from eulerlib.euler import euler_to_matrix, matrix_to_euler
 from eulerlib.integration import integrate_angular_velocity
+from eulerlib.interpolation import slerp
 from eulerlib.plotting import (
     aircraft_segments,
     animate_gimbal_lock,
     draw_aircraft,
+    draw_axis_path,
     draw_frame,
     new_3d_axes,
+    plot_axis_paths,
     plot_frames,
     plot_gimbal,
 )
+from eulerlib.quaternion import euler_to_quaternion
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
+    from mpl_toolkits.mplot3d.axes3d import Axes3D
 
 __all__ = ["FIGURE_NAMES", "THUMBNAILS", "write_figures"]
 
@@ -252,6 +262,65 @@ def _numerical_robustness() -> Figure:
     return fig
 
 
+def _axis_and_angle() -> Figure:
+    R = euler_to_matrix(_ANGLES, "ZYX", degrees=True)
+    axis, angle = matrix_to_axis_angle(R)
+    turning = axis_angle_to_matrix(axis, np.linspace(0.0, float(angle), 30))
+    title = f"yaw 30°, pitch 20°, roll 10° is one turn of {np.degrees(angle):.1f}° about k"
+    import matplotlib.pyplot as plt
+
+    fig = plt.figure(figsize=(5, 4.6))
+    ax = new_3d_axes(fig, title=title)
+    draw_frame(ax, None, linestyle="--", alpha=0.45, linewidth=1.5)
+    draw_frame(ax, R, label_suffix="'")
+    ax.plot(*np.outer([-1.15, 1.15], axis).T, color="gold", linewidth=5, alpha=0.7)
+    ax.text(*(1.2 * axis), "k", color="darkgoldenrod", fontsize=11)
+    for letter, color in zip("xyz", ("tab:red", "tab:green", "tab:blue"), strict=True):
+        draw_axis_path(ax, turning, axis=letter, color=color, linewidth=1.0, alpha=0.8)
+    return fig
+
+
+def _quaternions() -> Figure:
+    import matplotlib.pyplot as plt
+
+    turn = np.linspace(0.0, 720.0, 241)
+    angles = np.column_stack([turn, np.zeros_like(turn), np.zeros_like(turn)])
+    q = euler_to_quaternion(angles, "ZYX", degrees=True, scalar_first=True)
+    # the quaternion of the turn itself, cos(θ/2) + sin(θ/2) k, not the canonical one (w ≥ 0)
+    half = np.radians(turn) / 2
+    q = q * np.sign(q[:, 0] * np.cos(half) + q[:, 3] * np.sin(half))[:, None]
+    fig, ax = plt.subplots(figsize=(6, 3.6), layout="constrained")
+    ax.plot(turn, q[:, 0], color="tab:blue", linewidth=2, label="w of q")
+    ax.plot(turn, q[:, 3], color="tab:orange", linewidth=2, label="z of q")
+    r11 = rot_z(turn, degrees=True)[:, 0, 0]
+    ax.plot(turn, r11, color="0.3", linestyle="--", label="r11 of R")
+    ax.axvline(360.0, color="0.6", linewidth=1)
+    ax.set_xticks(np.arange(0, 721, 180))
+    ax.set_xlabel("turn about z, degrees")
+    ax.set_ylabel("value")
+    ax.set_ylim(-1.15, 1.5)
+    ax.legend(fontsize=8, loc="upper center", ncols=3)
+    ax.set_title("the double cover: R repeats after 360°, q after 720°", fontsize=10)
+    return fig
+
+
+def _interpolating_orientations() -> Figure:
+    start, end = np.array([-40.0, 10.0, -20.0]), np.array([60.0, 50.0, 70.0])
+    t = np.linspace(0.0, 1.0, 41)
+    by_angles = euler_to_matrix(np.outer(1 - t, start) + np.outer(t, end), "ZYX", degrees=True)
+    by_slerp = slerp(by_angles[0], by_angles[-1], t)
+    fig = plot_axis_paths(
+        np.stack([by_angles, by_slerp]),
+        labels=["interpolated yaw, pitch, roll", "slerp"],
+        dot_every=4,
+        title="the nose from one attitude to another",
+        figsize=(5, 5),
+    )
+    sphere = cast("Axes3D", fig.axes[0])
+    sphere.view_init(elev=-20, azim=10)  # from a little below: the nose is pitched down
+    return fig
+
+
 def _angular_velocity_and_euler_rates() -> Figure:
     """A constant body rate that pitches the nose over the top: Euler rates fail near 90°."""
     import matplotlib.pyplot as plt
@@ -332,6 +401,9 @@ THUMBNAILS: dict[str, Callable[[], Figure]] = {
     "07_gimbal_lock_seen.png": _gimbal_lock_seen,
     "08_conventions_compared.png": _conventions_compared,
     "09_numerical_robustness.png": _numerical_robustness,
+    "10_axis_and_angle.png": _axis_and_angle,
+    "11_quaternions.png": _quaternions,
+    "12_interpolating_orientations.png": _interpolating_orientations,
     "13_angular_velocity_and_euler_rates.png": _angular_velocity_and_euler_rates,
     "14_a_real_imu_recording.png": _a_real_imu_recording,
 }

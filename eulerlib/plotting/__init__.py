@@ -25,6 +25,9 @@ What there is
   :class:`Explorer` with sliders for the three angles and a convention selector, and its
   testable core :func:`explorer_state`, which returns an :class:`ExplorerState`. Without a
   kernel the explorer's output is a picture of its starting setting.
+* :mod:`~eulerlib.plotting.paths`: :func:`draw_axis_path` and :func:`plot_axis_paths`: the path
+  that one body axis (the nose, by default) traces on the unit sphere while the body turns
+  through a stack of rotations, to compare interpolations or follow a motion.
 
 Everything listed is available directly from ``eulerlib.plotting``.
 
@@ -74,6 +77,7 @@ from eulerlib.plotting.gimbal import (
     gimbal_ring_points,
     plot_gimbal,
 )
+from eulerlib.plotting.paths import draw_axis_path, plot_axis_paths
 
 __all__ = [
     "AXIS_COLORS",
@@ -85,12 +89,14 @@ __all__ = [
     "aircraft_segments",
     "animate_gimbal_lock",
     "draw_aircraft",
+    "draw_axis_path",
     "draw_frame",
     "explorer",
     "explorer_state",
     "gimbal_ring_normals",
     "gimbal_ring_points",
     "new_3d_axes",
+    "plot_axis_paths",
     "plot_body_rotation",
     "plot_frames",
     "plot_gimbal",

@@ -1,0 +1,188 @@
+"""Answer key of notebook 12, interpolating orientations (Euler angles against slerp).
+
+12.1 finds the attitude 30 % of the way along the geodesic; 12.2 predicts the angle between two
+samples of slerp from the constant angular speed alone; 12.3 interpolates two quaternions whose
+dot product is negative, where the short way needs ``−q1`` (the double cover). The references are
+computed here with Shoemake's quaternion formula, not with :func:`eulerlib.slerp`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import NDArray
+
+from eulerlib import (
+    axis_angle_to_matrix,
+    euler_to_matrix,
+    euler_to_quaternion,
+    matrix_to_axis_angle,
+    quaternion_to_matrix,
+)
+
+from .judges import ArrayJudge, Mistake, NumberJudge, QuaternionJudge
+from .key import Example, Exercise
+
+
+def _shoemake(q0: NDArray[np.float64], q1: NDArray[np.float64], t: float) -> NDArray[np.float64]:
+    """(sin((1 − t) Ω) q0 + sin(t Ω) q1) / sin Ω, cos Ω = q0 · q1, for q0 · q1 > 0 (short way)."""
+    omega = math.acos(float(q0 @ q1))
+    return (math.sin((1 - t) * omega) * q0 + math.sin(t * omega) * q1) / math.sin(omega)
+
+
+# --- 12.1: 30 % of the way -----------------------------------------------------------------------
+
+_START = [-35.0, 20.0, 15.0]  # yaw, pitch, roll of R0 (Rose's ZYX, degrees)
+_END = [70.0, -25.0, 110.0]  # ... and of R1
+_Q_START = euler_to_quaternion(_START, "rose", degrees=True)
+_Q_END = euler_to_quaternion(_END, "rose", degrees=True)
+if _Q_START @ _Q_END < 0:  # the short way
+    _Q_END = -_Q_END
+_R_START = quaternion_to_matrix(_Q_START)
+_R_END = quaternion_to_matrix(_Q_END)
+_FRACTION = 0.3
+
+
+def _turned_on_the_left(fraction: float) -> NDArray[np.float64]:
+    """Rot(n, t θ) R0 with (n, θ) of R0ᵀ R1: the body-frame turn applied about the fixed axes."""
+    axis, angle = matrix_to_axis_angle(_R_START.T @ _R_END)
+    return axis_angle_to_matrix(axis, fraction * angle) @ _R_START
+
+
+# --- 12.3: the short way between q0 and q1 -------------------------------------------------------
+
+_Q0 = euler_to_quaternion([20.0, 10.0, -30.0], "rose", degrees=True)
+_Q1 = -euler_to_quaternion([75.0, -15.0, 20.0], "rose", degrees=True)  # q0 · q1 < 0
+assert _Q0 @ _Q1 < 0
+_MIDDLE = _shoemake(_Q0, -_Q1, 0.5)
+_LONG_WAY = (_Q0 + _Q1) / np.linalg.norm(_Q0 + _Q1)
+
+EXERCISES = [
+    Exercise(
+        id="12.1",
+        level="apply",
+        judge=ArrayJudge(
+            quaternion_to_matrix(_shoemake(_Q_START, _Q_END, _FRACTION)),
+            what="your matrix",
+            rotation=True,
+            mistakes=(
+                Mistake(
+                    quaternion_to_matrix(_shoemake(_Q_START, _Q_END, 1 - _FRACTION)),
+                    "that is 70 % of the way from R0, or 30 % from R1's end: slerp(R0, R1, t) "
+                    "starts at R0 when t = 0",
+                ),
+                Mistake(
+                    euler_to_matrix(
+                        (1 - _FRACTION) * np.array(_START) + _FRACTION * np.array(_END),
+                        "rose",
+                        degrees=True,
+                    ),
+                    "that is 30 % of the way from R0's yaw, pitch and roll to R1's: interpolating "
+                    "Euler angles follows another path; the question asks for slerp",
+                ),
+                Mistake(
+                    (1 - _FRACTION) * _R_START + _FRACTION * _R_END,
+                    "interpolating the entries of the matrices leaves the rotations: that matrix "
+                    "is not orthogonal. Turn from R0 toward R1 about the axis of R0ᵀ R1 instead",
+                ),
+                Mistake(
+                    _turned_on_the_left(_FRACTION),
+                    "the turn R0ᵀ R1 is about an axis of the body, so it multiplies R0 on the "
+                    "right: R0 Rot(n, t θ), not Rot(n, t θ) R0",
+                ),
+            ),
+        ),
+        given=lambda: (_R_START.copy(), _R_END.copy()),
+        examples=(
+            Example("eulerlib.slerp(R0_ex, R1_ex, 0.3)", "correct"),
+            Example(
+                "Slerp([0, 1], Rotation.from_matrix([R0_ex, R1_ex]))(0.3).as_matrix()", "correct"
+            ),
+            Example("eulerlib.slerp(R1_ex, R0_ex, 0.7)", "correct"),
+            Example("eulerlib.slerp(R0_ex, R1_ex, 0.7)", "off", "70 %"),
+            Example(
+                "eulerlib.euler_to_matrix(0.7 * eulerlib.matrix_to_euler(R0_ex, 'rose')"
+                " + 0.3 * eulerlib.matrix_to_euler(R1_ex, 'rose'), 'rose')",
+                "off",
+                "Euler angles",
+            ),
+            Example("0.7 * R0_ex + 0.3 * R1_ex", "off", "not orthogonal"),
+            Example(
+                "eulerlib.axis_angle_to_matrix(eulerlib.matrix_to_axis_angle(R0_ex.T @ R1_ex).axis,"
+                " 0.3 * eulerlib.matrix_to_axis_angle(R0_ex.T @ R1_ex).angle) @ R0_ex",
+                "off",
+                "on the right",
+            ),
+            Example("eulerlib.slerp(R0_ex, R1_ex, 0.3).T", "off", "transpose"),
+        ),
+        forbidden=("-35", "70.0, -25", "110"),
+    ),
+    Exercise(
+        id="12.2",
+        level="predict",
+        judge=NumberJudge(
+            36.0,
+            what="your angle",
+            tol=1e-6,
+            unit="deg",
+            mistakes=(
+                Mistake(
+                    48.0,
+                    "48° = 0.6 × 80° is the angle from R0 to the sample at t = 0.6, not from the "
+                    "sample at t = 0.15",
+                ),
+                Mistake(12.0, "12° = 0.15 × 80° is the angle from R0 to the sample at t = 0.15"),
+                Mistake(
+                    0.45,
+                    "0.45 is the difference of the fractions; the angle is that fraction of the "
+                    "whole turn between R0 and R1",
+                ),
+                Mistake(
+                    60.0,
+                    "60° = (0.15 + 0.6) × 80° adds the two fractions: the angle between the two "
+                    "samples is their difference times the whole turn",
+                ),
+            ),
+        ),
+        examples=(
+            Example("(0.6 - 0.15) * 80", "correct"),
+            Example("np.degrees(0.45 * np.radians(80))", "correct"),
+            Example("0.6 * 80", "off", "t = 0.6"),
+            Example("0.6 - 0.15", "off", "difference of the fractions"),
+            Example("(0.6 + 0.15) * 80", "off", "adds the two fractions"),
+            Example("0.45 * np.radians(80)", "off", "radians"),
+        ),
+        forbidden=("36", "0.45"),
+    ),
+    Exercise(
+        id="12.3",
+        level="extend",
+        judge=QuaternionJudge(
+            _MIDDLE,
+            scalar_first=False,
+            what="your quaternion",
+            mistakes=(
+                Mistake(
+                    _LONG_WAY,
+                    "that is the middle of the long way round: q0 · q1 < 0, so q1 lies on the "
+                    "far side of the sphere; −q1 is the same rotation on the near side. Flip q1 "
+                    "first",
+                ),
+            ),
+        ),
+        given=lambda: (_Q0.copy(), _Q1.copy()),
+        examples=(
+            Example(
+                "eulerlib.matrix_to_quaternion(eulerlib.slerp(eulerlib.quaternion_to_matrix(q0_ex),"
+                " eulerlib.quaternion_to_matrix(q1_ex), 0.5))",
+                "correct",
+            ),
+            Example("(q1_ex - q0_ex) / np.linalg.norm(q1_ex - q0_ex)", "correct", "same rotation"),
+            Example("Slerp([0, 1], Rotation.from_quat([q0_ex, q1_ex]))(0.5).as_quat()", "correct"),
+            Example("(q0_ex + q1_ex) / np.linalg.norm(q0_ex + q1_ex)", "off", "long way round"),
+            Example("(q0_ex - q1_ex) / 2", "off", "length"),
+            Example("np.roll((q0_ex - q1_ex) / np.linalg.norm(q0_ex - q1_ex), 1)", "off", "order"),
+        ),
+    ),
+]
