@@ -328,6 +328,17 @@ def test_student_command_writes_copies_whose_checks_say_not_yet(
     assert output_text(read(copy_path).cells[-1]) == "not yet\n"
 
 
+def test_student_copies_bring_the_data_the_notebooks_read(tmp_path: Path) -> None:
+    source, out = tmp_path / "course", tmp_path / "student"
+    (source / "data" / "inner").mkdir(parents=True)
+    nbformat.write(tiny_notebook(), str(source / "01_tiny.ipynb"))
+    (source / "data" / "samples.csv").write_bytes(b"t,x\r\n0,1\r\n")
+    (source / "data" / "inner" / "README.md").write_text("origin\n", encoding="utf-8")
+    write_student_copies(source, out)
+    assert (out / "data" / "samples.csv").read_bytes() == b"t,x\r\n0,1\r\n"
+    assert (out / "data" / "inner" / "README.md").read_text(encoding="utf-8") == "origin\n"
+
+
 def test_student_command_overwrites_only_with_force(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:

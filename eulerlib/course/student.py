@@ -17,6 +17,7 @@ This module needs the ``notebooks`` extra (nbformat, nbconvert).
 
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 from typing import Any
 
@@ -29,6 +30,8 @@ __all__ = ["SOLUTION_TAG", "student_copy", "student_copy_paths", "write_student_
 
 #: The tag of the cells a student copy leaves out.
 SOLUTION_TAG = "solution"
+#: The folder of data files next to the notebooks, copied along with the student copies.
+DATA_FOLDER = "data"
 
 
 def student_copy(notebook: Any) -> Any:
@@ -93,6 +96,9 @@ def write_student_copies(source: str | Path, out: str | Path, *, force: bool = F
         Overwrite copies that already exist in ``out``. Without it nothing is written when any
         of them exists.
 
+    The folder ``data/`` next to the notebooks (recorded data that notebooks read) is copied
+    into ``out`` as it is, so that the copies run there too.
+
     Returns
     -------
     list of Path
@@ -109,6 +115,11 @@ def write_student_copies(source: str | Path, out: str | Path, *, force: bool = F
     """
     force = check_flag(force, "force")
     pairs = student_copy_paths(source, out)
+    data = [
+        (path, Path(out) / path.relative_to(source))
+        for path in sorted((Path(source) / DATA_FOLDER).rglob("*"))
+        if path.is_file()
+    ]
     existing = [copy_path for _, copy_path in pairs if copy_path.exists()]
     if existing and not force:
         raise FileExistsError(
@@ -118,4 +129,7 @@ def write_student_copies(source: str | Path, out: str | Path, *, force: bool = F
     Path(out).mkdir(parents=True, exist_ok=True)
     for path, copy_path in pairs:
         write_notebook(student_copy(read_notebook(path)), copy_path)
+    for path, copy_path in data:  # the recorded data some notebooks read, byte for byte
+        copy_path.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(path, copy_path)
     return [copy_path for _, copy_path in pairs]
