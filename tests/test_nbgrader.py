@@ -52,6 +52,8 @@ KEY = exercises()
 POINTS = {"apply": 1, "predict": 2, "extend": 3}
 #: The notebook of the small course; its exercises are those of the key's notebook 05.
 SMALL = "05_matrix_to_angles"
+#: The course is graded in this many parts, so that pytest-xdist can spread them over the cores.
+PARTS = 2
 
 RUN_NBGRADER = os.environ.get("EULERLIB_NBGRADER") == "1"
 needs_nbgrader_run = pytest.mark.skipif(
@@ -594,11 +596,25 @@ def course_not_in_exercise_form() -> str | None:
     return None
 
 
+def course_part(part: int, folder: Path) -> Path:
+    """Every other notebook of the course, from the ``part``-th on, with the glossary and the
+    data, in ``folder``: the course is graded in two halves, one per core."""
+    folder.mkdir()
+    for path in sorted(COURSE.glob("[0-9][0-9]_*.ipynb"))[part::PARTS]:
+        shutil.copyfile(path, folder / path.name)
+    shutil.copyfile(COURSE / "glossary.ipynb", folder / "glossary.ipynb")
+    shutil.copytree(COURSE / "data", folder / "data", ignore=shutil.ignore_patterns("__pycache__"))
+    return folder
+
+
 @needs_nbgrader_run
+@pytest.mark.parametrize(
+    "part", range(PARTS), ids=[f"part {p + 1} of {PARTS}" for p in range(PARTS)]
+)
 def test_nbgrader_generates_autogrades_and_exports_the_course(
-    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+    part: int, tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     reason = course_not_in_exercise_form()
     if reason is not None:
         pytest.skip(f"the course is not in the exercise form yet: {reason}")
-    grade_course(COURSE, tmp_path / "grading", capsys)
+    grade_course(course_part(part, tmp_path / "course"), tmp_path / "grading", capsys)
