@@ -294,17 +294,26 @@ def test_the_edition_passes_nbgraders_own_metadata_check(small_course: Path) -> 
 
 
 def test_hidden_tests_grade_with_the_key_and_say_why(small_course: Path) -> None:
-    """The hidden test of 05.1, run here with a right answer, a typical mistake and ``...``."""
+    """The hidden test of 05.1, run here on every answer of the exercise's test table and on
+    ``...``, in a namespace where the notebook has redefined ``check``."""
+    import numpy as np
+
+    from eulerlib.course import given
+
     edition = nbgrader_edition(small_course)
     notebook = edition.notebooks[Path("source", SMALL, f"{SMALL}.ipynb")]
     test = next(c for c in notebook.cells if grading(c).get("grade_id") == "test-05-1")
     hidden = test.source.split("### BEGIN HIDDEN TESTS\n")[1]
-    namespace: dict[str, Any] = {"check": lambda *args: "a check the notebook redefined"}
-    exec("answer_1 = [260, 35, -200]", namespace)
-    exec(hidden, namespace)  # passes
-    exec("answer_1 = [160, 35, -100]", namespace)
-    with pytest.raises(AssertionError, match=r"^Exercise 05\.1 — off: .*reverse order"):
-        exec(hidden, namespace)
+    namespace: dict[str, Any] = {"np": np, "R_ex": given("05.1"), "check": lambda *_: True}
+    for example in KEY["05.1"].examples:
+        exec(f"answer_1 = {example.code}", namespace)
+        if example.status == "correct":
+            exec(hidden, namespace)  # passes
+        else:
+            with pytest.raises(AssertionError) as failed:
+                exec(hidden, namespace)
+            assert str(failed.value).startswith("Exercise 05.1 — off: "), example.code
+            assert example.says in str(failed.value), example.code
     exec("answer_1 = ...", namespace)
     with pytest.raises(AssertionError, match=r"^Exercise 05\.1 — not yet"):
         exec(hidden, namespace)
