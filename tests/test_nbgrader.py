@@ -295,16 +295,16 @@ def test_the_edition_passes_nbgraders_own_metadata_check(small_course: Path) -> 
 
 def test_hidden_tests_grade_with_the_key_and_say_why(small_course: Path) -> None:
     """The hidden test of 05.1, run here on every answer of the exercise's test table and on
-    ``...``, in a namespace where the notebook has redefined ``check``."""
-    import numpy as np
-
-    from eulerlib.course import given
-
+    ``...``, after the notebook's imports and the exercise's data, and with ``check`` redefined
+    as a notebook might."""
     edition = nbgrader_edition(small_course)
     notebook = edition.notebooks[Path("source", SMALL, f"{SMALL}.ipynb")]
     test = next(c for c in notebook.cells if grading(c).get("grade_id") == "test-05-1")
     hidden = test.source.split("### BEGIN HIDDEN TESTS\n")[1]
-    namespace: dict[str, Any] = {"np": np, "R_ex": given("05.1"), "check": lambda *_: True}
+    imports = next(c for c in notebook.cells if c.cell_type == "code").source
+    namespace: dict[str, Any] = {}
+    exec("\n".join(line for line in imports.splitlines() if not line.startswith("%")), namespace)
+    exec('R_ex = given("05.1")\ncheck = lambda *_: True', namespace)
     for example in KEY["05.1"].examples:
         exec(f"answer_1 = {example.code}", namespace)
         if example.status == "correct":
