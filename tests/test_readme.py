@@ -36,6 +36,23 @@ def test_ci_runs_the_readme_test_command_verbatim() -> None:
     assert test_command in ci_script.splitlines()
 
 
+def test_ci_runs_the_nbgrader_tests_that_the_readme_command_skips() -> None:
+    # The README's command runs tests/test_nbgrader.py without nbgrader's own run (minutes of
+    # autograding; skipped unless EULERLIB_NBGRADER=1); CI runs it as a step of its own, with the
+    # teach extra that installs nbgrader.
+    test_file = (ROOT / "tests" / "test_nbgrader.py").read_text(encoding="utf-8")
+    assert 'os.environ.get("EULERLIB_NBGRADER") == "1"' in test_file
+    ci_script = (ROOT / ".ci" / "run").read_text(encoding="utf-8").splitlines()
+    readme_step = next(i for i, line in enumerate(ci_script) if line.endswith("python -m pytest"))
+    install = next(i for i, line in enumerate(ci_script) if '-e ".[test,teach]"' in line)
+    run = next(
+        i
+        for i, line in enumerate(ci_script)
+        if line.startswith("EULERLIB_NBGRADER=1 ") and line.endswith(" tests/test_nbgrader.py")
+    )
+    assert readme_step < install < run
+
+
 def test_readme_opens_the_course_in_jupyterlab() -> None:
     commands = [line for block in _blocks("bash") for line in block.splitlines()]
     assert any(

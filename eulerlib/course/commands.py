@@ -1,9 +1,14 @@
-"""The course's commands: ``eulerlib notebooks student|refresh``, ``eulerlib figures`` and
-``eulerlib site build``.
+"""The course's commands: ``eulerlib notebooks student|nbgrader|refresh``, ``eulerlib figures``
+and ``eulerlib site build``.
 
 * ``eulerlib notebooks student --out DIR [--src DIR] [--force]`` (for teachers) writes a
   student copy of every course notebook into ``DIR`` (:mod:`eulerlib.course.student`). It does
   not overwrite existing copies unless ``--force`` is given.
+* ``eulerlib notebooks nbgrader --out DIR [--src DIR] [--force]`` (for teachers who grade with
+  nbgrader) writes the course as an nbgrader course folder: ``DIR/nbgrader_config.py`` and one
+  assignment per notebook under ``DIR/source/`` (:mod:`eulerlib.course.nbgrader_edition`). It
+  needs the ``teach`` extra (nbgrader) and does not overwrite an earlier edition unless
+  ``--force`` is given.
 * ``eulerlib notebooks refresh [NOTEBOOK ...]`` (for maintainers) re-executes notebooks and
   stores them in normal form (:mod:`eulerlib.course.notebook_form`); all of ``notebooks/`` by
   default.
@@ -46,6 +51,8 @@ NOTEBOOK_TOOLS = ("nbformat", "nbclient", "nbconvert")
 #: The packages of the ``site`` extra that ``eulerlib site build`` imports (the MathJax package's
 #: name is its import name).
 SITE_TOOLS = ("jupyter_book", "sphinx-mathjax-offline", "nbformat", "nbconvert")
+#: What ``eulerlib notebooks nbgrader`` needs: the notebook tools, and nbgrader to use the edition.
+GRADING_TOOLS = ("nbformat", "nbconvert", "nbgrader")
 
 
 def configure_notebooks(parser: argparse.ArgumentParser) -> None:
@@ -63,6 +70,22 @@ def configure_notebooks(parser: argparse.ArgumentParser) -> None:
     )
     student.add_argument(
         "--force", action="store_true", help="overwrite student copies already in --out"
+    )
+    grading = actions.add_parser(
+        "nbgrader",
+        help="write the course as an nbgrader course folder, one assignment per notebook",
+        description="Write the course as an nbgrader course folder: nbgrader_config.py and one "
+        "assignment per notebook under source/, each exercise an autograded answer with a hidden "
+        "test that asks the course's answer key.",
+    )
+    grading.add_argument(
+        "--out", type=Path, required=True, help="the nbgrader course folder to write into"
+    )
+    grading.add_argument(
+        "--src", type=Path, help="folder of the course notebooks (default: notebooks/)"
+    )
+    grading.add_argument(
+        "--force", action="store_true", help="overwrite the files of an earlier edition in --out"
     )
     refresh = actions.add_parser(
         "refresh",
@@ -93,7 +116,10 @@ def _course_folder(folder: Path, instead: str) -> Path:
 
 
 def run_notebooks(args: argparse.Namespace) -> int:
-    """Carry out ``eulerlib notebooks student|refresh``."""
+    """Carry out ``eulerlib notebooks student|nbgrader|refresh``."""
+    if args.action == "nbgrader":
+        require(GRADING_TOOLS, extra="teach", needed_by="eulerlib notebooks nbgrader")
+        return _nbgrader(args.src, args.out, force=args.force)
     require(NOTEBOOK_TOOLS, extra="notebooks", needed_by=f"eulerlib notebooks {args.action}")
     if args.action == "refresh":
         return _refresh(args.notebooks)
@@ -109,6 +135,18 @@ def _student(src: Path | None, out: Path, *, force: bool) -> int:
     except FileExistsError as error:
         raise ValueError(f"{error}; pass --force to overwrite them") from None
     print(f"wrote {len(written)} student copies to {out}")
+    return 0
+
+
+def _nbgrader(src: Path | None, out: Path, *, force: bool) -> int:
+    from eulerlib.course.nbgrader_edition import write_nbgrader_edition
+
+    source = src if src is not None else _course_folder(NOTEBOOK_FOLDER, "pass --src DIR")
+    try:
+        edition = write_nbgrader_edition(source, out, force=force)
+    except FileExistsError as error:
+        raise ValueError(f"{error}; pass --force to overwrite them") from None
+    print(f"wrote {len(edition.assignments)} nbgrader assignments and nbgrader_config.py to {out}")
     return 0
 
 

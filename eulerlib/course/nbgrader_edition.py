@@ -1,0 +1,397 @@
+"""The nbgrader edition of the course: every exercise graded by the answer key that checks it.
+
+A teacher who grades with `nbgrader <https://nbgrader.readthedocs.io>`_ needs the course as an
+nbgrader *source* tree: one folder per assignment under ``source/``, holding notebooks whose
+cells carry nbgrader's metadata. This module writes that tree from the teacher's edition (the
+committed notebooks), one assignment per numbered notebook::
+
+    DIR/nbgrader_config.py
+    DIR/source/05_matrix_to_angles/05_matrix_to_angles.ipynb
+    DIR/source/05_matrix_to_angles/glossary.ipynb      (when the notebook links to it)
+    DIR/source/05_matrix_to_angles/data/...            (when the notebook reads from it)
+
+Each exercise of the course is four cells: the question (markdown), the ``exercise`` cell (the
+question's data and ``answer_k = ...``), the ``solution`` cell (the worked answer) and the
+``check`` cell (``check("NN.k", answer_k)``). In the edition they become two graded cells:
+
+* an **autograded answer** cell (nbgrader's ``solution`` cell): the exercise cell's code, followed
+  by the worked solution between ``### BEGIN SOLUTION`` and ``### END SOLUTION``. nbgrader's
+  ``generate_assignment`` replaces that region by the short note of :data:`CODE_STUB` (set in the
+  ``nbgrader_config.py`` written next to ``source/``), so a student finds the cell exactly as
+  in a student copy of the course: the data, then ``answer_k = ...`` to fill in;
+* an **autograder test** cell worth :data:`POINTS` ``[level]`` points: the check cell as it is,
+  which the student runs for feedback, followed by a hidden test, between ``### BEGIN HIDDEN
+  TESTS`` and ``### END HIDDEN TESTS``, that asks the answer key itself
+  (:func:`eulerlib.course.exercises.check`, imported afresh) and fails unless the verdict is
+  ``correct``. The assertion's message is the feedback, so a student's graded notebook says why
+  an answer lost its points. The reference and the tolerance stay in the key: the same judge
+  decides the self-check and the grade, and accepts every answer that is equally right.
+
+Every other cell — the explanations, the demonstrations, the question — is read-only (nbgrader's
+``locked`` cells, which ``autograde`` restores from the source before it runs a submission).
+Outputs are cleared; nbgrader's metadata follows schema version :data:`SCHEMA_VERSION`, the one
+nbgrader 0.9 reads.
+
+An exercise that is not in the course's form (the check cell is not exactly
+``check("NN.k", answer_k)``, the three cells are not consecutive, the exercise cell has no
+``answer_k = ...`` line, the key has no such exercise) stops the edition with a message naming
+the notebook and the exercise, before anything is written.
+
+This module needs nbformat and nbconvert (the ``notebooks`` extra); using the edition needs
+nbgrader (the ``teach`` extra).
+"""
+
+from __future__ import annotations
+
+import copy
+import re
+import shutil
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import nbformat
+from nbconvert.preprocessors import ClearOutputPreprocessor
+
+from eulerlib._validation import check_flag
+from eulerlib.course.exercises import exercises
+from eulerlib.course.notebook_form import normalize_notebook, read_notebook, write_notebook
+
+__all__ = [
+    "CODE_STUB",
+    "CONFIG_NAME",
+    "POINTS",
+    "SCHEMA_VERSION",
+    "Edition",
+    "nbgrader_config",
+    "nbgrader_edition",
+    "nbgrader_notebook",
+    "write_nbgrader_edition",
+]
+
+#: Points of an exercise by its level in the notebook's climb (apply, predict, extend).
+POINTS = {"apply": 1, "predict": 2, "extend": 3}
+#: The version of nbgrader's cell metadata that nbgrader 0.9 reads and writes.
+SCHEMA_VERSION = 3
+#: What ``generate_assignment`` puts in place of a worked solution (see :func:`nbgrader_config`).
+CODE_STUB = "# your answer goes in place of the ... above"
+#: The name of the configuration file written next to ``source/``.
+CONFIG_NAME = "nbgrader_config.py"
+
+BEGIN_SOLUTION, END_SOLUTION = "### BEGIN SOLUTION", "### END SOLUTION"
+BEGIN_HIDDEN_TESTS, END_HIDDEN_TESTS = "### BEGIN HIDDEN TESTS", "### END HIDDEN TESTS"
+
+_NOTEBOOK_NAME = re.compile(r"(\d\d)_\w+\.ipynb")
+_CHECK = re.compile(r'check\("(\d\d\.\d)", (answer_\d)\)')
+_TAGS = ("exercise", "solution", "check")
+_COURSE_TAGS = frozenset({*_TAGS, "hide-input"})
+_GLOSSARY = "glossary.ipynb"
+_DATA = "data"
+
+
+def _tags(cell: Any) -> list[str]:
+    return list(cell.get("metadata", {}).get("tags", []))
+
+
+def _kind(cell: Any) -> str | None:
+    """``exercise``, ``solution``, ``check`` or None, from the cell's tags."""
+    kinds = [tag for tag in _tags(cell) if tag in _TAGS]
+    return kinds[0] if kinds else None
+
+
+def _nbgrader(grade_id: str, *, grade: bool, solution: bool, locked: bool) -> dict[str, Any]:
+    """nbgrader's metadata of a cell (schema version 3)."""
+    return {
+        "grade": grade,
+        "grade_id": grade_id,
+        "locked": locked,
+        "schema_version": SCHEMA_VERSION,
+        "solution": solution,
+    }
+
+
+def _without_course_tags(cell: Any) -> dict[str, Any]:
+    """The cell's metadata without the exercise tags and JupyterLab's folding state."""
+    metadata = {key: value for key, value in cell.metadata.items() if key != "jupyter"}
+    tags = [tag for tag in _tags(cell) if tag not in _COURSE_TAGS]
+    metadata.pop("tags", None)
+    if tags:
+        metadata["tags"] = tags
+    return metadata
+
+
+def _answer_cell(exercise: Any, solution: Any, exercise_id: str) -> Any:
+    grade_id = "answer-" + exercise_id.replace(".", "-")
+    source = "\n".join(
+        [exercise.source.rstrip(), BEGIN_SOLUTION, solution.source.rstrip(), END_SOLUTION]
+    )
+    cell = nbformat.v4.new_code_cell(source, metadata=_without_course_tags(exercise))
+    cell.metadata["nbgrader"] = _nbgrader(grade_id, grade=False, solution=True, locked=False)
+    return cell
+
+
+def _test_cell(check: Any, exercise_id: str, answer: str, points: int) -> Any:
+    grade_id = "test-" + exercise_id.replace(".", "-")
+    hidden = [
+        BEGIN_HIDDEN_TESTS,
+        "# graded by the answer key itself, whatever the notebook may have redefined",
+        "import eulerlib.course.exercises as _answer_key",
+        "",
+        f'_feedback = _answer_key.check("{exercise_id}", {answer})',
+        'assert _feedback.status == "correct", str(_feedback)',
+        END_HIDDEN_TESTS,
+    ]
+    cell = nbformat.v4.new_code_cell(
+        "\n".join([check.source.strip(), *hidden]), metadata=_without_course_tags(check)
+    )
+    cell.metadata["nbgrader"] = _nbgrader(grade_id, grade=True, solution=False, locked=True)
+    cell.metadata["nbgrader"]["points"] = points
+    return cell
+
+
+def _lock(cell: Any, grade_id: str) -> Any:
+    locked = copy.deepcopy(cell)
+    locked.metadata["nbgrader"] = _nbgrader(grade_id, grade=False, solution=False, locked=True)
+    return locked
+
+
+def _cleared(notebook: Any) -> Any:
+    """A copy of ``notebook`` in normal form, without outputs and without saved widget state."""
+    result = normalize_notebook(notebook)
+    result, _ = ClearOutputPreprocessor().preprocess(result, {})
+    result.metadata.pop("widgets", None)
+    return result
+
+
+def nbgrader_notebook(notebook: Any, name: str) -> Any:
+    """The nbgrader source version of one course notebook (see the module docstring).
+
+    Parameters
+    ----------
+    notebook : nbformat.NotebookNode
+        A course notebook (teacher's edition); it is left unchanged.
+    name : str
+        Its file name, ``NN_name.ipynb``: the exercises in it must be ``NN.1``, ``NN.2``, …
+
+    Returns
+    -------
+    nbformat.NotebookNode
+        The notebook with an autograded answer cell and an autograder test cell per exercise,
+        every other cell read-only, outputs cleared.
+
+    Raises
+    ------
+    ValueError
+        If ``name`` is not ``NN_name.ipynb``, or an exercise is not in the course's form or not
+        in the answer key; the message names the notebook and the exercise.
+
+    Examples
+    --------
+    >>> import nbformat
+    >>> new = nbformat.v4.new_code_cell
+    >>> course = nbformat.v4.new_notebook(cells=[
+    ...     new("from eulerlib.course import check, given"),
+    ...     new('R_ex = given("05.1")\\nanswer_1 = ...', metadata={"tags": ["exercise"]}),
+    ...     new("answer_1 = [-100, 35, 160]", metadata={"tags": ["solution"]}),
+    ...     new('check("05.1", answer_1)', metadata={"tags": ["check"]}),
+    ... ])
+    >>> edition = nbgrader_notebook(course, "05_matrix_to_angles.ipynb")
+    >>> [cell.metadata["nbgrader"]["grade_id"] for cell in edition.cells]
+    ['cell-000', 'answer-05-1', 'test-05-1']
+    >>> print(edition.cells[1].source)
+    R_ex = given("05.1")
+    answer_1 = ...
+    ### BEGIN SOLUTION
+    answer_1 = [-100, 35, 160]
+    ### END SOLUTION
+    >>> edition.cells[2].metadata["nbgrader"]["points"]
+    1
+    """
+    match = _NOTEBOOK_NAME.fullmatch(name)
+    if match is None:
+        raise ValueError(f"{name}: a course notebook is named NN_name.ipynb")
+    number = match.group(1)
+    key = exercises()
+    edition = _cleared(notebook)
+    cells = edition.cells
+    result: list[Any] = []
+    count = 0
+    index = 0
+    while index < len(cells):
+        cell = cells[index]
+        kind = _kind(cell)
+        if kind is None:
+            result.append(_lock(cell, f"cell-{len(result):03d}"))
+            index += 1
+            continue
+        count += 1
+        exercise_id = f"{number}.{count}"
+        where = f"{name}, exercise {exercise_id}"
+        three = cells[index : index + 3]
+        if [_kind(c) for c in three] != list(_TAGS):
+            raise ValueError(
+                f"{where}: expected an exercise cell, its solution cell and its check cell, "
+                "in this order and next to each other"
+            )
+        exercise, solution, check = three
+        found = _CHECK.fullmatch(check.source.strip())
+        if found is None:
+            raise ValueError(f'{where}: the check cell must be exactly check("NN.k", answer_k)')
+        if found.group(1) != exercise_id:
+            raise ValueError(f"{where}: the check cell names exercise {found.group(1)}")
+        answer = found.group(2)
+        if not re.search(rf"^{answer} = \.\.\.\s*$", exercise.source, flags=re.MULTILINE):
+            raise ValueError(f"{where}: the exercise cell has no `{answer} = ...` line")
+        if exercise_id not in key:
+            raise ValueError(f"{where}: the answer key has no exercise {exercise_id}")
+        points = POINTS[key[exercise_id].level]
+        result.append(_answer_cell(exercise, solution, exercise_id))
+        result.append(_test_cell(check, exercise_id, answer, points))
+        index += 3
+    edition.cells = result
+    for position, cell in enumerate(edition.cells):
+        cell["id"] = f"cell-{position:03d}"
+    return edition
+
+
+def _locked_glossary(notebook: Any) -> Any:
+    glossary = _cleared(notebook)
+    glossary.cells = [_lock(cell, f"glossary-{i:03d}") for i, cell in enumerate(glossary.cells)]
+    return glossary
+
+
+def nbgrader_config() -> str:
+    """The text of the ``nbgrader_config.py`` of the edition.
+
+    It sets nbgrader's ``ClearSolutions.code_stub`` to :data:`CODE_STUB`. nbgrader's own stub
+    (``raise NotImplementedError()``) would make every answer cell fail even after the student
+    has filled in the ``...`` kept above the solution.
+    """
+    return (
+        "# nbgrader settings of the eulerlib course, as written by `eulerlib notebooks nbgrader`.\n"
+        "# Run nbgrader's commands in this folder, or copy these settings into the\n"
+        "# nbgrader_config.py of your course.\n"
+        "c = get_config()  # noqa: F821 (defined by nbgrader when it reads this file)\n"
+        "\n"
+        "# Each answer cell keeps the course's `answer_k = ...` line above the worked solution,\n"
+        "# so the released copy needs only a note where the solution was (nbgrader's default,\n"
+        "# `raise NotImplementedError()`, would fail every answer).\n"
+        f'c.ClearSolutions.code_stub = {{"python": "{CODE_STUB}"}}\n'
+    )
+
+
+@dataclass(frozen=True)
+class Edition:
+    """The files of the nbgrader edition: path relative to the output folder → what to write.
+
+    ``notebooks`` holds the notebooks (nbformat nodes), ``files`` the files copied as they are
+    (relative path → source path), ``config`` the text of ``nbgrader_config.py``.
+    """
+
+    notebooks: dict[Path, Any]
+    files: dict[Path, Path]
+    config: str
+
+    @property
+    def assignments(self) -> list[str]:
+        """The assignments, in course order."""
+        return sorted({path.parts[1] for path in self.notebooks})
+
+    def paths(self) -> Iterator[Path]:
+        """Every file the edition writes, relative to the output folder."""
+        yield Path(CONFIG_NAME)
+        yield from self.notebooks
+        yield from self.files
+
+
+def _mentions_data(notebook: Any, data: Path) -> bool:
+    """True when a code cell names the data folder or a file in it."""
+    code = "\n".join(cell.source for cell in notebook.cells if cell.cell_type == "code")
+    names = [path.name for path in data.iterdir() if path.is_file()]
+    return bool(re.search(r"""["']data(?:["'/\\])""", code)) or any(n in code for n in names)
+
+
+def nbgrader_edition(source: str | Path) -> Edition:
+    """Build the nbgrader edition of every numbered notebook (``NN_*.ipynb``) in ``source``.
+
+    Raises
+    ------
+    ValueError
+        If ``source`` is not a folder, holds no numbered notebooks, or an exercise is not in the
+        course's form (see :func:`nbgrader_notebook`).
+    """
+    source = Path(source)
+    if not source.is_dir():
+        raise ValueError(f"no notebook folder at {source}")
+    paths = sorted(p for p in source.glob("*.ipynb") if _NOTEBOOK_NAME.fullmatch(p.name))
+    if not paths:
+        raise ValueError(f"no course notebooks (NN_name.ipynb) in {source}")
+    glossary_path, data = source / _GLOSSARY, source / _DATA
+    glossary = _locked_glossary(read_notebook(glossary_path)) if glossary_path.is_file() else None
+    notebooks: dict[Path, Any] = {}
+    files: dict[Path, Path] = {}
+    for path in paths:
+        notebook = read_notebook(path)
+        folder = Path("source", path.stem)
+        notebooks[folder / path.name] = nbgrader_notebook(notebook, path.name)
+        text = "\n".join(cell.source for cell in notebook.cells if cell.cell_type == "markdown")
+        if glossary is not None and _GLOSSARY in text:
+            notebooks[folder / _GLOSSARY] = glossary
+        if data.is_dir() and _mentions_data(notebook, data):
+            for file in sorted(data.rglob("*")):
+                if file.is_file() and "__pycache__" not in file.parts:
+                    files[folder / _DATA / file.relative_to(data)] = file
+    return Edition(notebooks, files, nbgrader_config())
+
+
+def write_nbgrader_edition(source: str | Path, out: str | Path, *, force: bool = False) -> Edition:
+    """Write the nbgrader edition of the notebooks in ``source`` into the course folder ``out``.
+
+    Parameters
+    ----------
+    source : str or Path
+        The folder of the course notebooks (teacher's edition).
+    out : str or Path
+        The nbgrader course folder: ``nbgrader_config.py`` and ``source/`` go in it. Created if
+        needed; other files in it are left alone.
+    force : bool, optional
+        Overwrite files of an earlier edition. Without it nothing is written when any of the
+        files exists.
+
+    Returns
+    -------
+    Edition
+        What was written (:attr:`Edition.assignments` lists the assignments).
+
+    Raises
+    ------
+    ValueError
+        If ``source`` is not a folder of course notebooks, ``out`` is that folder, or an exercise
+        is not in the course's form; nothing is written then.
+    TypeError
+        If ``force`` is not True or False.
+    FileExistsError
+        If files of the edition exist already and ``force`` is not set; the message says how many.
+    """
+    force = check_flag(force, "force")
+    out = Path(out)
+    if out.resolve() == Path(source).resolve():
+        raise ValueError("the nbgrader edition must go to another folder than the course notebooks")
+    edition = nbgrader_edition(source)
+    existing = [path for path in edition.paths() if (out / path).exists()]
+    if existing and not force:
+        total = len(list(edition.paths()))
+        raise FileExistsError(
+            f"{len(existing)} of the {total} files of the nbgrader edition already exist in "
+            f"{out} (first: {existing[0].as_posix()})"
+        )
+    out.mkdir(parents=True, exist_ok=True)
+    (out / CONFIG_NAME).write_text(edition.config, encoding="utf-8")
+    for relative, notebook in edition.notebooks.items():
+        (out / relative).parent.mkdir(parents=True, exist_ok=True)
+        write_notebook(notebook, out / relative)
+    for relative, file in edition.files.items():
+        (out / relative).parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(file, out / relative)
+    return edition

@@ -1,0 +1,629 @@
+"""The nbgrader edition: built from the course, then generated, autograded and exported by nbgrader.
+
+Two parts.
+
+* **The edition itself** (fast; nbformat only): ``eulerlib notebooks nbgrader`` on a small course
+  in the course's exercise form, built here — its layout, nbgrader's cell metadata, the hidden
+  tests, the refusals (an exercise not in the course's form, an earlier edition without
+  ``--force``, nbgrader not installed).
+* **nbgrader's own run** (slow, so it is its own step of ``.ci/run`` and runs only when
+  ``EULERLIB_NBGRADER=1``): the edition is turned into the students' version by
+  ``nbgrader generate_assignment``; submissions are made from it by filling in the answer cells
+  — the worked solutions, rows of the exercises' test tables (answers right in another form and
+  typical mistakes) and untouched ``...`` — and graded by ``nbgrader autograde``; the grades
+  exported by ``nbgrader export`` (CSV) must be the points of the answers the test tables call
+  correct, and each graded notebook must show the diagnosis the test table expects. This runs on
+  the small course and on the real one (``notebooks/``) once its notebooks are in the exercise
+  form.
+"""
+
+from __future__ import annotations
+
+import copy
+import csv
+import os
+import re
+import shutil
+import subprocess
+import sys
+import types
+from pathlib import Path
+from typing import Any
+
+import nbformat
+import pytest
+
+from eulerlib import cli
+from eulerlib.course.exercises import Exercise, exercises
+from eulerlib.course.exercises.feedback import NOT_YET
+from eulerlib.course.nbgrader_edition import (
+    CODE_STUB,
+    CONFIG_NAME,
+    nbgrader_edition,
+    write_nbgrader_edition,
+)
+from eulerlib.course.student import student_copy
+
+REPO = Path(__file__).resolve().parents[1]
+COURSE = REPO / "notebooks"
+KEY = exercises()
+
+#: Points by level, as the edition promises them (the README says so too).
+POINTS = {"apply": 1, "predict": 2, "extend": 3}
+#: The notebook of the small course; its exercises are those of the key's notebook 05.
+SMALL = "05_matrix_to_angles"
+#: The course is graded in this many parts, so that pytest-xdist can spread them over the cores.
+PARTS = 2
+
+RUN_NBGRADER = os.environ.get("EULERLIB_NBGRADER") == "1"
+needs_nbgrader_run = pytest.mark.skipif(
+    not RUN_NBGRADER,
+    reason="nbgrader's generate_assignment, autograde and export take a minute or more: they run "
+    "as their own step of .ci/run (EULERLIB_NBGRADER=1 python -m pytest tests/test_nbgrader.py)",
+)
+
+CHECK = re.compile(r'check\("(\d\d\.\d)", (answer_\d)\)')
+
+
+# --- a small course in the course's exercise form -------------------------------------------------
+
+md, code = nbformat.v4.new_markdown_cell, nbformat.v4.new_code_cell
+
+
+def tagged(source: str, *tags: str, folded: bool = False) -> Any:
+    cell = code(source, metadata={"tags": list(tags)})
+    if folded:
+        cell.metadata["jupyter"] = {"source_hidden": True}
+    return cell
+
+
+def exercise(exercise_id: str, title: str, question: str, data: str, solution: str) -> list[Any]:
+    """The four cells of an exercise, as course.md describes them."""
+    k = exercise_id.split(".")[1]
+    lines = [data] if data else []
+    return [
+        md(f"**Exercise {exercise_id} ({title}).** {question}"),
+        tagged("\n".join([*lines, f"answer_{k} = ..."]), "exercise"),
+        tagged(solution, "solution", "hide-input", folded=True),
+        tagged(f'check("{exercise_id}", answer_{k})', "check"),
+    ]
+
+
+def small_notebook() -> Any:
+    """Notebook 05 of a small course: the key's three exercises 05.1–05.3, a link to the glossary
+    and a cell that reads a file of ``data/``; stored as a refreshed notebook is, with outputs."""
+    cells = [
+        md("# 05 · From the matrix back to the angles\n\nReading angles off a matrix."),
+        md(
+            "**Prerequisites**: notebook 04.\n\n**Learning objectives**\n\n"
+            "- read yaw, pitch and roll off a matrix\n- use `atan2`\n- find the second triple"
+        ),
+        code(
+            "%matplotlib inline\nimport numpy as np\n\nfrom eulerlib import matrix_to_euler\n"
+            "from eulerlib.course import check, given"
+        ),
+        md("At [gimbal lock](glossary.ipynb#gimbal-lock) the pitch is ±90°."),
+        code('samples = np.loadtxt("data/samples.csv", delimiter=",")\nprint(samples.shape)'),
+        *exercise(
+            "05.1",
+            "read the angles",
+            "Recover yaw, pitch and roll, in degrees, from `R_ex`.",
+            'R_ex = given("05.1")  # the matrix of some yaw, pitch and roll',
+            "yaw = np.arctan2(R_ex[1, 0], R_ex[0, 0])\npitch = -np.arcsin(R_ex[2, 0])\n"
+            "roll = np.arctan2(R_ex[2, 1], R_ex[2, 2])\nanswer_1 = np.degrees([yaw, pitch, roll])",
+        ),
+        *exercise(
+            "05.2",
+            "the other triple",
+            "Give the other triple of `R_ex`, the one with pitch outside [-90°, 90°].",
+            "",
+            "answer_2 = np.degrees(\n    [\n        np.arctan2(-R_ex[1, 0], -R_ex[0, 0]),\n"
+            "        np.pi + np.arcsin(R_ex[2, 0]),\n"
+            "        np.arctan2(-R_ex[2, 1], -R_ex[2, 2]),\n    ]\n)",
+        ),
+        *exercise(
+            "05.3",
+            "another convention",
+            "Give the angles of `M_ex` for the sequence `'XYZ'`, in degrees.",
+            'M_ex = given("05.3")',
+            'answer_3 = matrix_to_euler(M_ex, "XYZ", degrees=True)',
+        ),
+        md("## Summary\n\nRose eq 3; Baker's formulas."),
+    ]
+    notebook = nbformat.v4.new_notebook(cells=cells)
+    notebook.metadata["kernelspec"] = {
+        "display_name": "Python 3",
+        "language": "python",
+        "name": "python3",
+    }
+    for cell in notebook.cells:  # outputs as a refreshed notebook stores them
+        if cell.cell_type == "code":
+            cell.outputs = [nbformat.v4.new_output("stream", text="stored output\n")]
+            cell.execution_count = 1
+    return notebook
+
+
+def write_small_course(folder: Path) -> Path:
+    """The small course in ``folder``: notebook 05, the glossary and ``data/samples.csv``."""
+    folder.mkdir(parents=True)
+    nbformat.write(small_notebook(), str(folder / f"{SMALL}.ipynb"))
+    glossary = nbformat.v4.new_notebook(
+        cells=[md("# Glossary"), md("## Gimbal lock\n\nTwo axes of rotation line up.")]
+    )
+    nbformat.write(glossary, str(folder / "glossary.ipynb"))
+    (folder / "data").mkdir()
+    (folder / "data" / "samples.csv").write_text("1,2,3\n4,5,6\n")
+    return folder
+
+
+@pytest.fixture
+def small_course(tmp_path: Path) -> Path:
+    return write_small_course(tmp_path / "course")
+
+
+@pytest.fixture
+def nbgrader_importable(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The command requires nbgrader; where it is not installed, a stand-in module answers the
+    import (writing the edition itself uses nbformat only)."""
+    try:
+        import nbgrader  # noqa: F401
+    except ImportError:
+        monkeypatch.setitem(sys.modules, "nbgrader", types.ModuleType("nbgrader"))
+
+
+def run_cli(capsys: pytest.CaptureFixture[str], *args: str) -> tuple[int, str, str]:
+    status = cli.main(list(args))
+    captured = capsys.readouterr()
+    return status, captured.out, captured.err
+
+
+def read(path: Path) -> Any:
+    return nbformat.read(str(path), as_version=4)
+
+
+def grading(cell: Any) -> dict[str, Any]:
+    return dict(cell.get("metadata", {}).get("nbgrader", {}))
+
+
+def tags(cell: Any) -> list[str]:
+    return list(cell.get("metadata", {}).get("tags", []))
+
+
+# --- the edition ----------------------------------------------------------------------------------
+
+
+def test_command_writes_one_assignment_per_notebook_with_what_it_uses(
+    small_course: Path,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    nbgrader_importable: None,
+) -> None:
+    out = tmp_path / "grading"
+    status, stdout, err = run_cli(
+        capsys, "notebooks", "nbgrader", "--src", str(small_course), "--out", str(out)
+    )
+    assert (status, err) == (0, "")
+    assert stdout == f"wrote 1 nbgrader assignments and nbgrader_config.py to {out}\n"
+    written = sorted(p.relative_to(out).as_posix() for p in out.rglob("*") if p.is_file())
+    assert written == [
+        "nbgrader_config.py",
+        f"source/{SMALL}/{SMALL}.ipynb",
+        f"source/{SMALL}/data/samples.csv",
+        f"source/{SMALL}/glossary.ipynb",
+    ]
+    assert (out / "source" / SMALL / "data" / "samples.csv").read_text() == "1,2,3\n4,5,6\n"
+    config = (out / CONFIG_NAME).read_text()
+    assert f'c.ClearSolutions.code_stub = {{"python": "{CODE_STUB}"}}' in config.splitlines()
+    compile(config, CONFIG_NAME, "exec")
+    glossary = read(out / "source" / SMALL / "glossary.ipynb")
+    assert all(grading(cell)["locked"] and not grading(cell)["grade"] for cell in glossary.cells)
+
+
+def test_a_notebook_without_links_or_data_gets_no_companions(tmp_path: Path) -> None:
+    course = write_small_course(tmp_path / "course")
+    plain = small_notebook()
+    plain.cells = [cell for cell in plain.cells if "data/" not in cell.source]
+    plain.cells = [cell for cell in plain.cells if "glossary.ipynb" not in cell.source]
+    nbformat.write(plain, str(course / f"{SMALL}.ipynb"))
+    assert [path.as_posix() for path in nbgrader_edition(course).paths()] == [
+        CONFIG_NAME,
+        f"source/{SMALL}/{SMALL}.ipynb",
+    ]
+
+
+def test_each_exercise_becomes_an_answer_cell_and_a_hidden_test(small_course: Path) -> None:
+    edition = nbgrader_edition(small_course)
+    notebook = edition.notebooks[Path("source", SMALL, f"{SMALL}.ipynb")]
+    nbformat.validate(notebook)
+    course = small_notebook()
+    # Every cell that is not part of an exercise is kept as it is, read-only.
+    kept = [c for c in course.cells if not {"exercise", "solution", "check"} & set(tags(c))]
+    locked = [c for c in notebook.cells if grading(c)["locked"] and not grading(c)["grade"]]
+    assert [c.source for c in locked] == [c.source for c in kept]
+    assert all(grading(c)["solution"] is False for c in locked)
+    answers = [c for c in notebook.cells if grading(c)["solution"]]
+    tests = [c for c in notebook.cells if grading(c)["grade"]]
+    assert len(notebook.cells) == len(kept) + len(answers) + len(tests)
+    assert [grading(c)["grade_id"] for c in answers] == [
+        "answer-05-1",
+        "answer-05-2",
+        "answer-05-3",
+    ]
+    assert [grading(c)["grade_id"] for c in tests] == ["test-05-1", "test-05-2", "test-05-3"]
+    assert [grading(c)["points"] for c in tests] == [
+        POINTS[KEY[f"05.{k}"].level] for k in (1, 2, 3)
+    ]
+    ids = [grading(c)["grade_id"] for c in notebook.cells]
+    assert len(set(ids)) == len(ids)
+    assert all(re.fullmatch(r"[a-zA-Z0-9_\-]+", grade_id) for grade_id in ids)
+
+    def sources(tag: str) -> list[str]:
+        return [cell.source for cell in course.cells if tag in tags(cell)]
+
+    triples = zip(sources("exercise"), sources("solution"), sources("check"), strict=True)
+    for k, (answer, test, (question, solution, check)) in enumerate(
+        zip(answers, tests, triples, strict=True)
+    ):
+        assert answer.source == f"{question}\n### BEGIN SOLUTION\n{solution}\n### END SOLUTION"
+        assert grading(answer) == {
+            "grade": False,
+            "grade_id": f"answer-05-{k + 1}",
+            "locked": False,
+            "schema_version": 3,
+            "solution": True,
+        }
+        visible, hidden = test.source.split("\n### BEGIN HIDDEN TESTS\n")
+        assert visible == check
+        assert hidden.endswith("\n### END HIDDEN TESTS")
+        assert f'_answer_key.check("05.{k + 1}", answer_{k + 1})' in hidden
+        assert 'assert _feedback.status == "correct", str(_feedback)' in hidden
+        assert grading(test)["locked"] and not grading(test)["solution"]
+        assert "hide-input" not in tags(answer) and "jupyter" not in answer.metadata
+    assert all(c.get("outputs", []) == [] for c in notebook.cells if c.cell_type == "code")
+    assert all(c.get("execution_count") is None for c in notebook.cells if c.cell_type == "code")
+    assert [c.id for c in notebook.cells] == [f"cell-{i:03d}" for i in range(len(notebook.cells))]
+
+
+def test_the_edition_passes_nbgraders_own_metadata_check(small_course: Path) -> None:
+    nbgraderformat = pytest.importorskip("nbgrader.nbgraderformat")
+    validator = nbgraderformat.MetadataValidator()
+    for notebook in nbgrader_edition(small_course).notebooks.values():
+        validator.validate_nb(notebook)  # raises on a schema or consistency problem
+        for cell in notebook.cells:
+            validator.validate_cell(cell)
+
+
+def test_hidden_tests_grade_with_the_key_and_say_why(small_course: Path) -> None:
+    """The hidden test of 05.1, run here on every answer of the exercise's test table and on
+    ``...``, after the notebook's imports and the exercise's data, and with ``check`` redefined
+    as a notebook might."""
+    edition = nbgrader_edition(small_course)
+    notebook = edition.notebooks[Path("source", SMALL, f"{SMALL}.ipynb")]
+    test = next(c for c in notebook.cells if grading(c).get("grade_id") == "test-05-1")
+    hidden = test.source.split("### BEGIN HIDDEN TESTS\n")[1]
+    imports = next(c for c in notebook.cells if c.cell_type == "code").source
+    namespace: dict[str, Any] = {}
+    exec("\n".join(line for line in imports.splitlines() if not line.startswith("%")), namespace)
+    exec('R_ex = given("05.1")\ncheck = lambda *_: True', namespace)
+    for example in KEY["05.1"].examples:
+        exec(f"answer_1 = {example.code}", namespace)
+        if example.status == "correct":
+            exec(hidden, namespace)  # passes
+        else:
+            with pytest.raises(AssertionError) as failed:
+                exec(hidden, namespace)
+            assert str(failed.value).startswith("Exercise 05.1 — off: "), example.code
+            assert example.says in str(failed.value), example.code
+    exec("answer_1 = ...", namespace)
+    with pytest.raises(AssertionError, match=r"^Exercise 05\.1 — not yet"):
+        exec(hidden, namespace)
+
+
+@pytest.mark.parametrize(
+    ("change", "message"),
+    [
+        (
+            lambda cells: cells[8].update(source="check_angles(answer_1, [-100, 35, 160])"),
+            r"05_matrix_to_angles\.ipynb, exercise 05\.1: the check cell must be exactly",
+        ),
+        (
+            lambda cells: cells[8].update(source='check("05.2", answer_1)'),
+            r"exercise 05\.1: the check cell names exercise 05\.2",
+        ),
+        (
+            lambda cells: cells[6].update(source='R_ex = given("05.1")\nanswer_1 = None'),
+            r"exercise 05\.1: the exercise cell has no `answer_1 = \.\.\.` line",
+        ),
+        (
+            lambda cells: cells.insert(7, code("print(R_ex)")),
+            r"exercise 05\.1: expected an exercise cell, its solution cell and its check cell",
+        ),
+        (
+            lambda cells: cells.extend(exercise("05.4", "more", "?", "", "answer_4 = 1")),
+            r"exercise 05\.4: the answer key has no exercise 05\.4",
+        ),
+    ],
+    ids=["old-style check", "wrong id", "no placeholder", "cells apart", "not in the key"],
+)
+def test_an_exercise_not_in_the_course_form_stops_the_edition(
+    change: Any,
+    message: str,
+    small_course: Path,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    nbgrader_importable: None,
+) -> None:
+    notebook = small_notebook()
+    change(notebook.cells)
+    nbformat.write(notebook, str(small_course / f"{SMALL}.ipynb"))
+    out = tmp_path / "grading"
+    status, stdout, err = run_cli(
+        capsys, "notebooks", "nbgrader", "--src", str(small_course), "--out", str(out)
+    )
+    assert (status, stdout) == (1, "")
+    assert len(err.splitlines()) == 1 and re.search(message, err), err
+    assert not out.exists()  # nothing written
+
+
+def test_an_earlier_edition_is_overwritten_only_with_force(
+    small_course: Path,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    nbgrader_importable: None,
+) -> None:
+    out = tmp_path / "grading"
+    arguments = ("notebooks", "nbgrader", "--src", str(small_course), "--out", str(out))
+    assert run_cli(capsys, *arguments)[0] == 0
+    notebook = out / "source" / SMALL / f"{SMALL}.ipynb"
+    notebook.write_text("a teacher's change\n")
+    (out / "gradebook.db").write_text("grades\n")
+    status, stdout, err = run_cli(capsys, *arguments)
+    assert (status, stdout) == (1, "")
+    assert err.splitlines() == [
+        "eulerlib notebooks: error: 4 of the 4 files of the nbgrader edition already exist in "
+        f"{out} (first: nbgrader_config.py); pass --force to overwrite them"
+    ]
+    assert notebook.read_text() == "a teacher's change\n"
+    assert run_cli(capsys, *arguments, "--force")[0] == 0
+    assert read(notebook) == nbgrader_edition(small_course).notebooks[notebook.relative_to(out)]
+    assert (out / "gradebook.db").read_text() == "grades\n"  # not the edition's: left alone
+
+
+def test_the_edition_refuses_the_course_folder_and_bad_flags(small_course: Path) -> None:
+    with pytest.raises(ValueError, match="another folder"):
+        write_nbgrader_edition(small_course, small_course)
+    with pytest.raises(ValueError, match="no notebook folder at"):
+        write_nbgrader_edition(small_course / "missing", small_course.parent / "out")
+    with pytest.raises(ValueError, match=r"no course notebooks \(NN_name\.ipynb\)"):
+        write_nbgrader_edition(small_course / "data", small_course.parent / "out")
+    with pytest.raises(TypeError, match=r"^force must be True or False"):
+        write_nbgrader_edition(small_course, small_course.parent / "out", force="yes")  # type: ignore[arg-type]
+
+
+def test_command_without_notebook_folder_fails_in_one_line(
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+    nbgrader_importable: None,
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    status, _, err = run_cli(capsys, "notebooks", "nbgrader", "--out", "grading")
+    assert status == 1 and len(err.splitlines()) == 1
+    assert "no notebooks/ folder here" in err and "--src" in err
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("hidden", ["nbgrader", "nbformat", "nbconvert"])
+def test_command_names_the_teach_extra_when_a_tool_is_missing(
+    hidden: str,
+    small_course: Path,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setitem(sys.modules, hidden, None)  # `import hidden` fails, as when not installed
+    out = tmp_path / "grading"
+    status, stdout, err = run_cli(
+        capsys, "notebooks", "nbgrader", "--src", str(small_course), "--out", str(out)
+    )
+    assert (status, stdout) == (1, "")
+    assert err.splitlines() == [
+        f"eulerlib notebooks: error: eulerlib notebooks nbgrader needs {hidden} "
+        '(the teach extra): pip install "eulerlib[teach]"'
+    ]
+    assert not out.exists()
+
+
+# --- nbgrader's own run: generate_assignment, autograde, export -----------------------------------
+
+
+def exercises_of(notebook: Any) -> list[tuple[str, str]]:
+    """(exercise id, worked solution) of each exercise of a course notebook, in order."""
+    found = []
+    for index, cell in enumerate(notebook.cells):
+        if "check" in tags(cell):
+            match = CHECK.fullmatch(cell.source.strip())
+            assert match, cell.source
+            found.append((match.group(1), notebook.cells[index - 1].source))
+    return found
+
+
+def fill_in(release: Any, answers: dict[str, str | None]) -> Any:
+    """A submission: the released notebook with ``answer_k = ...`` of each exercise replaced by
+    the code given for it (``None`` leaves the ``...``)."""
+    submission = copy.deepcopy(release)
+    for cell in submission.cells:
+        grade_id = grading(cell).get("grade_id", "")
+        if not grade_id.startswith("answer-"):
+            continue
+        exercise_id = grade_id.removeprefix("answer-").replace("-", ".")
+        code = answers[exercise_id]
+        if code is None:
+            continue
+        placeholder = re.compile(rf"^answer_{exercise_id[-1]} = \.\.\.$", flags=re.MULTILINE)
+        assert placeholder.search(cell.source), cell.source
+        cell.source = placeholder.sub(lambda _, c=code: c, cell.source)
+    return submission
+
+
+def row(exercise: Exercise, status: str, index: int) -> tuple[str, str, str]:
+    """``(code that sets answer_k, verdict, words of the feedback)``: row ``index`` (cycling) of
+    the test table's rows of that verdict; for ``correct`` counted from the end, as the first
+    rows tend to repeat the worked solution."""
+    rows = [e for e in exercise.examples if e.status == status]
+    if status == "correct":
+        rows.reverse()
+    example = rows[index % len(rows)]
+    return f"answer_{exercise.id[-1]} = {example.code}", example.status, example.says
+
+
+def answer(exercise: Exercise, verdict: str, index: int) -> tuple[str | None, str, str]:
+    """An answer with that verdict: a row of the test table, or None (the untouched ``...``)."""
+    if verdict == "not yet":
+        return None, "not yet", NOT_YET
+    return row(exercise, verdict, index)
+
+
+def nbgrader(course: Path, *args: str) -> None:
+    """Run an nbgrader command in the course folder, as a teacher would."""
+    environment = dict(
+        os.environ, PATH=os.pathsep.join([str(Path(sys.executable).parent), os.environ["PATH"]])
+    )
+    result = subprocess.run(
+        [sys.executable, "-m", "nbgrader", *args],
+        cwd=course,
+        env=environment,
+        capture_output=True,
+        text=True,
+        timeout=1800,
+    )
+    assert result.returncode == 0, f"nbgrader {' '.join(args)} failed:\n{result.stderr[-4000:]}"
+
+
+def grade_course(source: Path, course: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Write the edition of ``source``, let nbgrader generate, autograde and export it, and check
+    the exported grades and the diagnoses in the graded notebooks."""
+    status, _, err = run_cli(
+        capsys, "notebooks", "nbgrader", "--src", str(source), "--out", str(course)
+    )
+    assert status == 0, err
+    nbgrader(course, "generate_assignment", "*")
+
+    # students: what each answers to each exercise, what it should score, what it should be told
+    expected_score: dict[tuple[str, str], float] = {}
+    expected_max: dict[str, float] = {}
+    diagnoses: dict[tuple[str, str], dict[str, tuple[str, str]]] = {}
+    for number, path in enumerate(sorted(source.glob("[0-9][0-9]_*.ipynb"))):
+        assignment = path.stem
+        release = read(course / "release" / assignment / path.name)
+        solved = exercises_of(read(path))
+        assert solved, f"{path.name} has no exercises"
+        keys = [KEY[exercise_id] for exercise_id, _ in solved]
+        expected_max[assignment] = float(sum(POINTS[k.level] for k in keys))
+
+        # The released notebook is the student copy, with nbgrader's note after each `...`.
+        visible = "\n".join(cell.source for cell in release.cells)
+        for key in keys:
+            for text in key.forbidden:
+                assert text not in visible, f"{path.name}: the release gives away {text!r}"
+        copy_sources = [c.source for c in student_copy(read(path)).cells]
+        released = [c.source.removesuffix(f"\n{CODE_STUB}") for c in release.cells]
+        assert released == copy_sources, f"{path.name}: the release is not the student copy"
+
+        # Two students: one hands in the worked solutions; the other typical answers, in turn
+        # (shifted from notebook to notebook) a mistake of the test table, an answer right in
+        # another form, the untouched `...`, another mistake.
+        typical = ("off", "correct", "not yet", "off")
+        plans: dict[str, dict[str, tuple[str | None, str, str]]] = {
+            "reference": {
+                k.id: (solution.strip(), "correct", "")
+                for k, (_, solution) in zip(keys, solved, strict=True)
+            },
+            "typical": {k.id: answer(k, typical[(n + number) % 4], n) for n, k in enumerate(keys)},
+        }
+        for student, plan in plans.items():
+            folder = course / "submitted" / student / assignment
+            shutil.copytree(course / "release" / assignment, folder)
+            answers = {exercise_id: code for exercise_id, (code, _, _) in plan.items()}
+            nbformat.write(fill_in(release, answers), str(folder / path.name))
+            expected_score[student, assignment] = float(
+                sum(
+                    POINTS[KEY[i].level]
+                    for i, (_, verdict, _) in plan.items()
+                    if verdict == "correct"
+                )
+            )
+            diagnoses[student, assignment] = {i: (v, says) for i, (_, v, says) in plan.items()}
+
+    nbgrader(course, "autograde", "*")
+    nbgrader(course, "export", "--to", "grades.csv")
+
+    with (course / "grades.csv").open(newline="") as stream:
+        grades = {(r["student_id"], r["assignment"]): r for r in csv.DictReader(stream)}
+    assert set(grades) == set(expected_score)
+    for (student, assignment), score in expected_score.items():
+        exported = grades[student, assignment]
+        assert float(exported["max_score"]) == expected_max[assignment], exported
+        assert float(exported["score"]) == score, f"{student}, {assignment}: {exported}"
+    assert all(
+        grades["reference", a]["score"] == grades["reference", a]["max_score"] for a in expected_max
+    )
+
+    # Each graded test cell shows the key's verdict: nothing when correct, else the diagnosis.
+    for (student, assignment), verdicts in diagnoses.items():
+        graded = read(course / "autograded" / student / assignment / f"{assignment}.ipynb")
+        for cell in graded.cells:
+            grade_id = grading(cell).get("grade_id", "")
+            if not grade_id.startswith("test-"):
+                continue
+            exercise_id = grade_id.removeprefix("test-").replace("-", ".")
+            verdict, says = verdicts[exercise_id]
+            errors = [o for o in cell.outputs if o.output_type == "error"]
+            where = f"{student}, {exercise_id}"
+            if verdict == "correct":
+                assert not errors, f"{where}: {errors}"
+            else:
+                assert [e.ename for e in errors] == ["AssertionError"], f"{where}: {errors}"
+                assert errors[0].evalue.startswith(f"Exercise {exercise_id} — {verdict}: "), where
+                assert says in errors[0].evalue, f"{where}: {errors[0].evalue}"
+
+
+@needs_nbgrader_run
+def test_nbgrader_generates_autogrades_and_exports_the_small_course(
+    small_course: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    grade_course(small_course, tmp_path / "grading", capsys)
+
+
+def course_not_in_exercise_form() -> str | None:
+    """Why the real course cannot be graded yet (its notebooks are being rewritten into the
+    exercise form of the answer key), or None when it can."""
+    for path in sorted(COURSE.glob("[0-9][0-9]_*.ipynb")):
+        for cell in read(path).cells:
+            if "check" in tags(cell) and not CHECK.fullmatch(cell.source.strip()):
+                return f"{path.name} still has check cells of the older style"
+    return None
+
+
+def course_part(part: int, folder: Path) -> Path:
+    """Every other notebook of the course, from the ``part``-th on, with the glossary and the
+    data, in ``folder``: the course is graded in two halves, one per core."""
+    folder.mkdir()
+    for path in sorted(COURSE.glob("[0-9][0-9]_*.ipynb"))[part::PARTS]:
+        shutil.copyfile(path, folder / path.name)
+    shutil.copyfile(COURSE / "glossary.ipynb", folder / "glossary.ipynb")
+    shutil.copytree(COURSE / "data", folder / "data", ignore=shutil.ignore_patterns("__pycache__"))
+    return folder
+
+
+@needs_nbgrader_run
+@pytest.mark.parametrize(
+    "part", range(PARTS), ids=[f"part {p + 1} of {PARTS}" for p in range(PARTS)]
+)
+def test_nbgrader_generates_autogrades_and_exports_the_course(
+    part: int, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    reason = course_not_in_exercise_form()
+    if reason is not None:
+        pytest.skip(f"the course is not in the exercise form yet: {reason}")
+    grade_course(course_part(part, tmp_path / "course"), tmp_path / "grading", capsys)
