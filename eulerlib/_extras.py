@@ -6,7 +6,9 @@ package, installed with ``pip install "eulerlib[EXTRA]"``:
 * ``symbolic``: SymPy, for :mod:`eulerlib.symbolic`;
 * ``plot``: matplotlib, for :mod:`eulerlib.plotting` and ``eulerlib figures``;
 * ``notebooks``: both of the above, JupyterLab and the notebook tools (nbformat, nbclient,
-  nbconvert) that ``eulerlib notebooks`` uses.
+  nbconvert) that ``eulerlib notebooks`` uses;
+* ``teach``: nbgrader, for ``eulerlib notebooks nbgrader``;
+* ``site``: Jupyter Book and a MathJax to bundle, for ``eulerlib site build``.
 
 A part that cannot import what it needs raises :class:`MissingExtraError`, an ``ImportError``
 whose one-line message says which extra to install. The command line prints that line as it is.

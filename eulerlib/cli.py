@@ -7,8 +7,8 @@ sub-parser and sets ``run`` as a default (``run(args) -> int``); heavy imports h
 * ``eulerlib convert``: angles in one convention into a matrix and angles in another
   (:mod:`eulerlib.convert_cli`);
 * ``eulerlib figures``: redraw every figure of the course (:mod:`eulerlib.course.commands`);
-* ``eulerlib notebooks``: make student copies of the notebooks, or re-execute and normalize
-  them (:mod:`eulerlib.course.commands`);
+* ``eulerlib notebooks``: make student copies of the notebooks or their nbgrader edition, or
+  re-execute and normalize them (:mod:`eulerlib.course.commands`);
 * ``eulerlib site``: build the course website from the stored notebooks
   (:mod:`eulerlib.course.commands`).
 
@@ -32,7 +32,7 @@ SUBCOMMANDS: dict[str, tuple[Callable[[argparse.ArgumentParser], None], str]] = 
     "figures": (course_commands.configure_figures, "redraw every figure of the course"),
     "notebooks": (
         course_commands.configure_notebooks,
-        "make student copies of the course notebooks, or refresh them",
+        "student copies or an nbgrader edition of the course notebooks, or refresh them",
     ),
     "site": (course_commands.configure_site, "build the course website from the notebooks"),
 }
