@@ -48,6 +48,7 @@ from eulerlib.course.site import (
     build_site,
     course_pages,
     jupyterlab_command,
+    landing_page_gaps,
     prepare_notebook,
     table_of_contents,
 )
@@ -203,6 +204,16 @@ def test_the_pages_show_the_readme_command_that_opens_jupyterlab() -> None:
     )
     with pytest.raises(ValueError, match="no command that opens notebooks/"):
         jupyterlab_command("# no commands here\n")
+
+
+def test_the_landing_page_cuts_the_readme_where_it_has_those_lines() -> None:
+    landing = (REPO / "site" / "index.md").read_text(encoding="utf-8")
+    assert landing.count(":start-after:") + landing.count(":end-before:") >= 4
+    assert landing_page_gaps(landing, README) == []
+    renamed = README.replace("\n## The course\n", "\n## The notebooks\n")
+    assert landing_page_gaps(landing, renamed) == [
+        "the README has no line '## The course' where the landing page cuts it"
+    ]
 
 
 def test_the_site_is_not_built_over_another_folder_or_a_file(tmp_path: Path) -> None:

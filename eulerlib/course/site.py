@@ -71,6 +71,8 @@ _FOLDED_TAG = "hide-input"
 _REMOTE_FONT_AWESOME = re.compile(
     r"<link\b[^>]*\bhref=[\"']https?://[^\"']*font-?awesome[^\"']*[\"'][^>]*>\s*", re.IGNORECASE
 )
+#: Where the landing page cuts the README: ``:start-after: "..."`` or ``:end-before: "..."``.
+_INCLUDE_MARKER = re.compile(r"""^:(?:start-after|end-before):\s*"([^"]+)"\s*$""", re.MULTILINE)
 #: A file the README shows on the landing page: ``src="figures/..."``.
 _README_PICTURE = re.compile(r"""\bsrc=["'](figures/[^"']+)["']""")
 
@@ -253,6 +255,27 @@ def _replace_widgets(cell: Any, where: str) -> bool:
     return widget
 
 
+def landing_page_gaps(landing: str, readme: str) -> list[str]:
+    """The places where the landing page cuts the README at a line that no line of it begins with.
+
+    The landing page (``site/index.md``) includes parts of the README between headings it names;
+    a heading renamed in the README would otherwise empty that part of the page without a word.
+
+    Examples
+    --------
+    >>> page = ':start-after: "## The course"\\n:end-before: "## The library"\\n'
+    >>> landing_page_gaps(page, "## The course\\n...\\n## The library\\n")
+    []
+    >>> landing_page_gaps(page, "## The course\\n...\\n## Using the library\\n")
+    ["the README has no line '## The library' where the landing page cuts it"]
+    """
+    return [
+        f"the README has no line {marker!r} where the landing page cuts it"
+        for marker in _INCLUDE_MARKER.findall(landing)
+        if not re.search(rf"^{re.escape(marker)}", readme, flags=re.MULTILINE)
+    ]
+
+
 def _stage(root: Path, stage: Path) -> tuple[list[str], list[str]]:
     """Copy and prepare the book's sources in ``stage``.
 
@@ -269,7 +292,10 @@ def _stage(root: Path, stage: Path) -> tuple[list[str], list[str]]:
     command = jupyterlab_command(readme)
     shutil.copytree(site, stage, dirs_exist_ok=True)
     (stage / "README.md").write_text(readme, encoding="utf-8")
-    warnings = []
+    warnings = [
+        f"site/index.md: WARNING: {gap}"
+        for gap in landing_page_gaps((site / "index.md").read_text(encoding="utf-8"), readme)
+    ]
     for picture in sorted(set(_README_PICTURE.findall(readme))):
         if not (root / picture).is_file():
             warnings.append(f"README.md: WARNING: the course map shows {picture}, which is missing")
