@@ -49,11 +49,14 @@ IGNORED_DIRS = frozenset(
 #: Default of the ``notebook_max_seconds`` setting (see the module docstring).
 NOTEBOOK_MAX_SECONDS = 20.0
 
+#: Seed of the ``rng`` fixture, for tests that draw the same numbers once for many cases.
+SEED = 20150214
+
 
 @pytest.fixture
 def rng() -> np.random.Generator:
     """A seeded generator, so every failure can be replayed."""
-    return np.random.default_rng(20150214)
+    return np.random.default_rng(SEED)
 
 
 # --- checks around the session ------------------------------------------------------------------

@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 import pytest
+from conftest import SEED
 from numpy.testing import assert_allclose
 from scipy.spatial.transform import Rotation
 
@@ -440,6 +441,23 @@ def test_convert_angles_checks_its_angles_once(monkeypatch: pytest.MonkeyPatch) 
     assert calls == ["angles"]
 
 
+@pytest.fixture(scope="module")
+def large_inputs() -> tuple[np.ndarray, ...]:
+    """400 000 angles, their matrices and quaternions, made once and shared read-only.
+
+    The values are those the seeded ``rng`` fixture draws, the same for every case; read-only,
+    so no call can change what the next case is given.
+    """
+    rng = np.random.default_rng(SEED)
+    n = 400_000
+    angles = rng.uniform(-3.0, 3.0, (n, 3))
+    R = euler_to_matrix(angles)
+    q = rng.normal(size=(n, 4))
+    for array in (angles, R, q):
+        array.flags.writeable = False
+    return angles, R, q
+
+
 def peak_bytes(call: Callable[[], object]) -> int:
     """Peak of the memory NumPy allocates during ``call`` (NumPy reports to tracemalloc)."""
     tracemalloc.start()
@@ -489,11 +507,11 @@ def peak_bytes(call: Callable[[], object]) -> int:
         ),
     ],
 )
-def test_no_temporary_as_large_as_the_input(name: str, call: Any, output_bytes: int, rng) -> None:
-    n = 400_000
-    angles = rng.uniform(-3.0, 3.0, (n, 3))
-    R = euler_to_matrix(angles)
-    q = rng.normal(size=(n, 4))
+def test_no_temporary_as_large_as_the_input(
+    name: str, call: Any, output_bytes: int, large_inputs: tuple[np.ndarray, ...]
+) -> None:
+    angles, R, q = large_inputs
+    n = len(angles)
     peak = peak_bytes(lambda: call(angles, R, q))
     # the output, plus the temporaries of one block (16384 rotations): a few MB at most
     assert peak <= n * output_bytes + 6_000_000, f"{name}: peak {peak / 1e6:.1f} MB"
