@@ -18,11 +18,11 @@ from typing import Any
 
 import numpy as np
 import pytest
-from conftest import SEED
 from numpy.testing import assert_allclose
 from scipy.spatial.transform import Rotation
 
 import eulerlib
+from conftest import SEED
 from eulerlib import (
     ALL_SEQUENCES,
     GIMBAL_LOCK_TOLERANCE,
