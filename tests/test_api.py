@@ -8,9 +8,8 @@ that failed before the fix.
 from __future__ import annotations
 
 import inspect
+import json
 import math
-import subprocess
-import sys
 import tracemalloc
 import warnings
 from collections.abc import Callable
@@ -18,6 +17,7 @@ from typing import Any
 
 import numpy as np
 import pytest
+from command_line import run_in_process
 from numpy.testing import assert_allclose
 from scipy.spatial.transform import Rotation
 
@@ -296,14 +296,9 @@ def test_huge_angles_in_degrees_keep_the_rotation(turns: int) -> None:
 
 
 def test_the_command_line_reduces_huge_degrees_too() -> None:
-    result = subprocess.run(
-        [sys.executable, "-m", "eulerlib", "convert", "--from", "rose", "--to", "rose",
-         "--degrees", "--json", "1e20", "0", "0"],
-        capture_output=True, text=True, check=False,
-    )  # fmt: skip
+    result = run_in_process("convert", "--from", "rose", "--to", "rose", "--degrees", "--json",
+                            "1e20", "0", "0")  # fmt: skip
     assert result.returncode == 0, result.stderr
-    import json
-
     report = json.loads(result.stdout)
     assert_allclose(report["conversions"][0]["angles"], [-80, 0, 0], atol=1e-12)  # 280° = −80°
 
@@ -341,11 +336,8 @@ def test_repair_refuses_matrices_with_no_nearest_rotation(matrix: np.ndarray, wo
 
 
 def test_the_command_line_refuses_an_unrepairable_matrix() -> None:
-    result = subprocess.run(
-        [sys.executable, "-m", "eulerlib", "convert", "--to", "rose", "--repair",
-         "--matrix", "0", "0", "0", "0", "0", "0", "0", "0", "0"],
-        capture_output=True, text=True, check=False,
-    )  # fmt: skip
+    result = run_in_process("convert", "--to", "rose", "--repair",
+                            "--matrix", "0", "0", "0", "0", "0", "0", "0", "0", "0")  # fmt: skip
     assert result.returncode == 1
     assert "singular" in result.stderr and "Traceback" not in result.stderr
 

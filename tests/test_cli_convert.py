@@ -1,95 +1,29 @@
 """``eulerlib convert`` as a user runs it, checked against SciPy.
 
-Most cases run the command line's entry function, :func:`eulerlib.cli.main`, in this process,
-with its standard input, output and error replaced and its exit status kept (argparse's exits
-included); any warning it raises is written to its standard error, as a fresh interpreter would
-show it. The entry points themselves, ``python -m eulerlib`` and the ``eulerlib`` console
-script, add nothing but the process around ``main``, so they are run for real in a few
-representative cases: a conversion, a gimbal lock reported in words, and a one-line failure.
+Most cases run the command line's entry function, :func:`eulerlib.cli.main`, in this process
+(:func:`command_line.run_in_process`: its standard streams replaced, its exit status kept, its
+warnings written to its standard error). The entry points themselves, ``python -m eulerlib``
+and the ``eulerlib`` console script, add nothing but the process around ``main``, so they run
+for real in a few representative cases: a conversion, a gimbal lock reported in words, and a
+one-line failure.
 """
 
 from __future__ import annotations
 
-import contextlib
-import io
 import json
-import subprocess
 import sys
-import warnings
-from collections.abc import Callable
 from pathlib import Path
-from typing import Any, NamedTuple
+from typing import Any
 
 import numpy as np
 import pytest
+from command_line import Outcome, Runner, real_process, run_in_process
 from numpy.testing import assert_allclose
-
-from eulerlib import cli
 
 Rotation = pytest.importorskip("scipy.spatial.transform").Rotation
 
 SCRIPT = Path(sys.executable).with_name("eulerlib")
 PYTHON_M = [sys.executable, "-m", "eulerlib"]
-
-
-class Outcome(NamedTuple):
-    """What a run of the command line left behind: its exit status and what it wrote."""
-
-    returncode: int
-    stdout: str
-    stderr: str
-
-
-#: Runs ``eulerlib ARGS...`` with an optional standard input.
-Runner = Callable[..., Outcome]
-
-
-def run_in_process(*args: str, stdin: str | None = None) -> Outcome:
-    """``eulerlib ARGS...`` through :func:`eulerlib.cli.main`, in this process."""
-    out, err = io.StringIO(), io.StringIO()
-    given_stdin = sys.stdin
-    sys.stdin = io.StringIO(stdin or "")
-    try:
-        with (
-            contextlib.redirect_stdout(out),
-            contextlib.redirect_stderr(err),
-            warnings.catch_warnings(record=True) as caught,
-        ):
-            warnings.simplefilter("always")
-            try:
-                status: Any = cli.main(list(args))
-            except SystemExit as stop:  # argparse: --help, or a bad option
-                status = stop.code
-    finally:
-        sys.stdin = given_stdin
-    for warning in caught:
-        err.write(warnings.formatwarning(
-            warning.message, warning.category, warning.filename, warning.lineno
-        ))  # fmt: skip
-    if status is None:
-        status = 0
-    elif not isinstance(status, int):  # sys.exit("message") prints it and exits with 1
-        err.write(f"{status}\n")
-        status = 1
-    return Outcome(status, out.getvalue(), err.getvalue())
-
-
-def real_process(command: list[str]) -> Runner:
-    """``eulerlib ARGS...`` run as its own process by ``command``."""
-
-    def run(*args: str, stdin: str | None = None) -> Outcome:
-        result = subprocess.run(
-            [*command, *args],
-            input=stdin,
-            capture_output=True,
-            text=True,
-            encoding="utf-8",
-            timeout=120,
-            check=False,
-        )
-        return Outcome(result.returncode, result.stdout, result.stderr)
-
-    return run
 
 
 #: Every way the command line is started; the representative cases run through each of them.
@@ -252,13 +186,21 @@ def test_matrix_file_and_stdin(tmp_path: Path) -> None:
         assert_allclose(report["conversions"][0]["angles"], [120, 35, -70], atol=1e-9)
 
 
-def test_repair_accepts_a_rounded_matrix(entry_point: Runner) -> None:
+def rounded_matrix() -> str:
+    """A rotation's nine entries rounded to 4 decimals: 1e-5 off, beyond the default atol."""
     R = Rotation.from_euler("ZYX", [10, 20, 30], degrees=True).as_matrix()
-    rounded = ",".join(f"{x:.4f}" for x in R.ravel())
-    refused = convert(entry_point, "--to", "rose", f"--matrix={rounded}")
+    return ",".join(f"{x:.4f}" for x in R.ravel())
+
+
+def test_a_matrix_that_is_not_a_rotation_is_refused_in_one_line(entry_point: Runner) -> None:
+    refused = convert(entry_point, "--to", "rose", f"--matrix={rounded_matrix()}")
+    assert refused.returncode == 1
     assert_clean_failure(refused, "not a rotation matrix", "--repair")
-    report = convert_json(entry_point, "--to", "rose", "--degrees", "--repair",
-                          f"--matrix={rounded}")  # fmt: skip
+
+
+def test_repair_accepts_a_rounded_matrix() -> None:
+    report = convert_json(run_in_process, "--to", "rose", "--degrees", "--repair",
+                          f"--matrix={rounded_matrix()}")  # fmt: skip
     assert_allclose(report["conversions"][0]["angles"], [10, 20, 30], atol=1e-2)
 
 
