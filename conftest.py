@@ -1,8 +1,7 @@
-"""How pytest starts in this repository: the plugins the test command uses, and only those.
+"""How pytest runs in this repository, and three costs it no longer pays in every process.
 
 The test command starts several pytest processes (the controller, one worker per core, and the
-sessions some tests run), and each one pays pytest's start-up again. Two costs there had nothing
-to do with the tests:
+sessions some tests run). Three costs there had nothing to do with the tests:
 
 * **Assertion rewriting of every installed plugin.** When pytest loads plugins automatically,
   it rewrites the asserts of each plugin's whole distribution as it is imported, Hypothesis'
@@ -17,6 +16,13 @@ to do with the tests:
   when imported, about a second of work per process. Nothing in a test session checks an IRI
   (nbformat validates notebooks against a draft-4 schema, with no format checker), so
   :func:`defer_rfc3987_syntax` puts off importing it until a first IRI check asks for it.
+* **The garbage collector going over the same objects again and again.** A worker holds SymPy,
+  matplotlib, SciPy, Hypothesis and some 4000 collected tests, none of which become garbage,
+  and every full collection of Python's cyclic garbage collector walked all of them again. The
+  youngest generation is therefore collected after :data:`GC_THRESHOLD` allocations instead of
+  700, and once the tests are collected, what is alive then is frozen out of the collector's
+  view (:func:`pytest_collection_finish`). What the tests throw away is reclaimed as before:
+  by reference counting at once, and in cycles by the collector.
 
 This file is pytest configuration only; the shared fixtures and the checks around the session
 are in ``tests/conftest.py``.
@@ -24,11 +30,14 @@ are in ``tests/conftest.py``.
 
 from __future__ import annotations
 
+import gc
 import importlib
 import importlib.util
 import sys
 import types
 from typing import Any
+
+import pytest
 
 #: The package whose import is put off, and the one function jsonschema takes from it.
 DEFERRED = "rfc3987_syntax"
@@ -66,3 +75,14 @@ def defer_rfc3987_syntax() -> None:
 defer_rfc3987_syntax()
 
 pytest_plugins = ["nbval.plugin"]
+
+#: Allocations between two collections of the youngest generation (CPython's default is 700).
+GC_THRESHOLD = 10_000
+
+gc.set_threshold(GC_THRESHOLD, *gc.get_threshold()[1:])
+
+
+def pytest_collection_finish(session: pytest.Session) -> None:
+    """Collect once, then leave what is alive out of every later collection (``gc.freeze``)."""
+    gc.collect()
+    gc.freeze()
