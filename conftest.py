@@ -16,13 +16,14 @@ sessions some tests run). Three costs there had nothing to do with the tests:
   when imported, about a second of work per process. Nothing in a test session checks an IRI
   (nbformat validates notebooks against a draft-4 schema, with no format checker), so
   :func:`defer_rfc3987_syntax` puts off importing it until a first IRI check asks for it.
-* **The garbage collector going over the same objects again and again.** A worker holds SymPy,
-  matplotlib, SciPy, Hypothesis and some 4000 collected tests, none of which become garbage,
-  and every full collection of Python's cyclic garbage collector walked all of them again. The
-  youngest generation is therefore collected after :data:`GC_THRESHOLD` allocations instead of
-  700, and once the tests are collected, what is alive then is frozen out of the collector's
-  view (:func:`pytest_collection_finish`). What the tests throw away is reclaimed as before:
-  by reference counting at once, and in cycles by the collector.
+* **The garbage collector going over the same objects again and again.** Collecting the tests
+  imports SymPy, matplotlib, SciPy and Hypothesis and makes some 4000 test items, objects that
+  live all session; Python's cyclic garbage collector walked them again at every full
+  collection, during the collection of the tests and after it. It is therefore off while the
+  tests are collected (which makes next to no garbage), and afterwards what is alive is frozen
+  out of its view (:func:`pytest_collection`). What the tests throw away is reclaimed as
+  before: by reference counting at once, and in cycles by the collector, which runs as often
+  as before.
 
 This file is pytest configuration only; the shared fixtures and the checks around the session
 are in ``tests/conftest.py``.
@@ -35,6 +36,7 @@ import importlib
 import importlib.util
 import sys
 import types
+from collections.abc import Generator
 from typing import Any
 
 import pytest
@@ -76,13 +78,14 @@ defer_rfc3987_syntax()
 
 pytest_plugins = ["nbval.plugin"]
 
-#: Allocations between two collections of the youngest generation (CPython's default is 700).
-GC_THRESHOLD = 10_000
 
-gc.set_threshold(GC_THRESHOLD, *gc.get_threshold()[1:])
-
-
-def pytest_collection_finish(session: pytest.Session) -> None:
-    """Collect once, then leave what is alive out of every later collection (``gc.freeze``)."""
-    gc.collect()
-    gc.freeze()
+@pytest.hookimpl(wrapper=True)
+def pytest_collection(session: pytest.Session) -> Generator[None, object, object]:
+    """Collect the tests with the garbage collector off, then collect once and freeze."""
+    gc.disable()
+    try:
+        return (yield)
+    finally:
+        gc.enable()
+        gc.collect()
+        gc.freeze()

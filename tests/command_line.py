@@ -10,6 +10,7 @@ back an :class:`Outcome`.
 from __future__ import annotations
 
 import contextlib
+import gc
 import io
 import subprocess
 import sys
@@ -33,7 +34,12 @@ Runner = Callable[..., Outcome]
 
 
 def run_in_process(*args: str, stdin: str | None = None) -> Outcome:
-    """``eulerlib ARGS...`` through :func:`eulerlib.cli.main`, in this process."""
+    """``eulerlib ARGS...`` through :func:`eulerlib.cli.main`, in this process.
+
+    Garbage left by earlier tests is collected first, so that a warning from its finalizer (an
+    animation never rendered, say) is not taken for one of the command's.
+    """
+    gc.collect()
     out, err = io.StringIO(), io.StringIO()
     given_stdin = sys.stdin
     sys.stdin = io.StringIO(stdin or "")
