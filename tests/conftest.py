@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import os
 from collections import defaultdict
+from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
@@ -49,11 +50,27 @@ IGNORED_DIRS = frozenset(
 #: Default of the ``notebook_max_seconds`` setting (see the module docstring).
 NOTEBOOK_MAX_SECONDS = 20.0
 
+#: Seed of the ``rng`` fixture, for tests that draw the same numbers once for many cases.
+SEED = 20150214
+
 
 @pytest.fixture
 def rng() -> np.random.Generator:
     """A seeded generator, so every failure can be replayed."""
-    return np.random.default_rng(20150214)
+    return np.random.default_rng(SEED)
+
+
+@pytest.fixture(autouse=True)
+def _numpy_print_options() -> Iterator[None]:
+    """NumPy's print options as they were before each test.
+
+    A test that runs notebook code in this process (the exercises) runs its
+    ``np.set_printoptions``; without this, a doctest that happens to run after it on the same
+    worker would print numbers differently.
+    """
+    options = np.get_printoptions()
+    yield
+    np.set_printoptions(**options)
 
 
 # --- checks around the session ------------------------------------------------------------------

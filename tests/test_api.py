@@ -8,9 +8,8 @@ that failed before the fix.
 from __future__ import annotations
 
 import inspect
+import json
 import math
-import subprocess
-import sys
 import tracemalloc
 import warnings
 from collections.abc import Callable
@@ -18,10 +17,12 @@ from typing import Any
 
 import numpy as np
 import pytest
+from command_line import run_in_process
 from numpy.testing import assert_allclose
 from scipy.spatial.transform import Rotation
 
 import eulerlib
+from conftest import SEED
 from eulerlib import (
     ALL_SEQUENCES,
     GIMBAL_LOCK_TOLERANCE,
@@ -295,14 +296,9 @@ def test_huge_angles_in_degrees_keep_the_rotation(turns: int) -> None:
 
 
 def test_the_command_line_reduces_huge_degrees_too() -> None:
-    result = subprocess.run(
-        [sys.executable, "-m", "eulerlib", "convert", "--from", "rose", "--to", "rose",
-         "--degrees", "--json", "1e20", "0", "0"],
-        capture_output=True, text=True, check=False,
-    )  # fmt: skip
+    result = run_in_process("convert", "--from", "rose", "--to", "rose", "--degrees", "--json",
+                            "1e20", "0", "0")  # fmt: skip
     assert result.returncode == 0, result.stderr
-    import json
-
     report = json.loads(result.stdout)
     assert_allclose(report["conversions"][0]["angles"], [-80, 0, 0], atol=1e-12)  # 280° = −80°
 
@@ -340,11 +336,8 @@ def test_repair_refuses_matrices_with_no_nearest_rotation(matrix: np.ndarray, wo
 
 
 def test_the_command_line_refuses_an_unrepairable_matrix() -> None:
-    result = subprocess.run(
-        [sys.executable, "-m", "eulerlib", "convert", "--to", "rose", "--repair",
-         "--matrix", "0", "0", "0", "0", "0", "0", "0", "0", "0"],
-        capture_output=True, text=True, check=False,
-    )  # fmt: skip
+    result = run_in_process("convert", "--to", "rose", "--repair",
+                            "--matrix", "0", "0", "0", "0", "0", "0", "0", "0", "0")  # fmt: skip
     assert result.returncode == 1
     assert "singular" in result.stderr and "Traceback" not in result.stderr
 
@@ -440,6 +433,23 @@ def test_convert_angles_checks_its_angles_once(monkeypatch: pytest.MonkeyPatch) 
     assert calls == ["angles"]
 
 
+@pytest.fixture(scope="module")
+def large_inputs() -> tuple[np.ndarray, ...]:
+    """400 000 angles, their matrices and quaternions, made once and shared read-only.
+
+    The values are those the seeded ``rng`` fixture draws, the same for every case; read-only,
+    so no call can change what the next case is given.
+    """
+    rng = np.random.default_rng(SEED)
+    n = 400_000
+    angles = rng.uniform(-3.0, 3.0, (n, 3))
+    R = euler_to_matrix(angles)
+    q = rng.normal(size=(n, 4))
+    for array in (angles, R, q):
+        array.flags.writeable = False
+    return angles, R, q
+
+
 def peak_bytes(call: Callable[[], object]) -> int:
     """Peak of the memory NumPy allocates during ``call`` (NumPy reports to tracemalloc)."""
     tracemalloc.start()
@@ -489,11 +499,11 @@ def peak_bytes(call: Callable[[], object]) -> int:
         ),
     ],
 )
-def test_no_temporary_as_large_as_the_input(name: str, call: Any, output_bytes: int, rng) -> None:
-    n = 400_000
-    angles = rng.uniform(-3.0, 3.0, (n, 3))
-    R = euler_to_matrix(angles)
-    q = rng.normal(size=(n, 4))
+def test_no_temporary_as_large_as_the_input(
+    name: str, call: Any, output_bytes: int, large_inputs: tuple[np.ndarray, ...]
+) -> None:
+    angles, R, q = large_inputs
+    n = len(angles)
     peak = peak_bytes(lambda: call(angles, R, q))
     # the output, plus the temporaries of one block (16384 rotations): a few MB at most
     assert peak <= n * output_bytes + 6_000_000, f"{name}: peak {peak / 1e6:.1f} MB"

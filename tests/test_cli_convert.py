@@ -1,48 +1,52 @@
-"""``eulerlib convert`` driven through the real command line, checked against SciPy."""
+"""``eulerlib convert`` as a user runs it, checked against SciPy.
+
+Most cases run the command line's entry function, :func:`eulerlib.cli.main`, in this process
+(:func:`command_line.run_in_process`: its standard streams replaced, its exit status kept, its
+warnings written to its standard error). The entry points themselves, ``python -m eulerlib``
+and the ``eulerlib`` console script, add nothing but the process around ``main``, so they run
+for real in a few representative cases: a conversion, a gimbal lock reported in words, and a
+one-line failure.
+"""
 
 from __future__ import annotations
 
 import json
-import subprocess
 import sys
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pytest
+from command_line import Outcome, Runner, real_process, run_in_process
 from numpy.testing import assert_allclose
 
 Rotation = pytest.importorskip("scipy.spatial.transform").Rotation
 
 SCRIPT = Path(sys.executable).with_name("eulerlib")
 PYTHON_M = [sys.executable, "-m", "eulerlib"]
-COMMANDS = [pytest.param(PYTHON_M, id="python-m")]
+
+
+#: Every way the command line is started; the representative cases run through each of them.
+ENTRY_POINTS = [
+    pytest.param(run_in_process, id="in-process"),
+    pytest.param(real_process(PYTHON_M), id="python-m"),
+]
 if SCRIPT.exists():
-    COMMANDS.append(pytest.param([str(SCRIPT)], id="console-script"))
+    ENTRY_POINTS.append(pytest.param(real_process([str(SCRIPT)]), id="console-script"))
 
 
-def convert(
-    command: list[str], *args: str, stdin: str | None = None
-) -> subprocess.CompletedProcess[str]:
-    return subprocess.run(
-        [*command, "convert", *args],
-        input=stdin,
-        capture_output=True,
-        text=True,
-        encoding="utf-8",
-        timeout=120,
-        check=False,
-    )
+def convert(run: Runner, *args: str, stdin: str | None = None) -> Outcome:
+    return run("convert", *args, stdin=stdin)
 
 
-def convert_json(command: list[str], *args: str, stdin: str | None = None) -> Any:
-    result = convert(command, "--json", *args, stdin=stdin)
+def convert_json(run: Runner, *args: str, stdin: str | None = None) -> Any:
+    result = convert(run, "--json", *args, stdin=stdin)
     assert result.returncode == 0, result.stderr
     assert result.stderr == ""
     return json.loads(result.stdout)
 
 
-def assert_clean_failure(result: subprocess.CompletedProcess[str], *words: str) -> None:
+def assert_clean_failure(result: Outcome, *words: str) -> None:
     """Non-zero exit, nothing on stdout, no traceback, the message on one line."""
     assert result.returncode != 0
     assert "Traceback" not in result.stderr
@@ -56,17 +60,18 @@ def assert_clean_failure(result: subprocess.CompletedProcess[str], *words: str) 
         assert word in lines[-1]
 
 
-@pytest.fixture(params=COMMANDS)
-def command(request: pytest.FixtureRequest) -> list[str]:
-    value: list[str] = request.param
+@pytest.fixture(params=ENTRY_POINTS)
+def entry_point(request: pytest.FixtureRequest) -> Runner:
+    """The command line started in each way it can be (a representative case)."""
+    value: Runner = request.param
     return value
 
 
 # --- angles in ----------------------------------------------------------------------------------
 
 
-def test_rose_to_ros_and_baker_match_scipy(command: list[str]) -> None:
-    report = convert_json(command, "--from", "rose", "--to", "ros", "--to", "baker",
+def test_rose_to_ros_and_baker_match_scipy(entry_point: Runner) -> None:
+    report = convert_json(entry_point, "--from", "rose", "--to", "ros", "--to", "baker",
                           "--degrees", "30", "20", "10")  # fmt: skip
     R = Rotation.from_euler("ZYX", [30, 20, 10], degrees=True)
     assert_allclose(report["matrix"], R.as_matrix(), atol=1e-14)
@@ -91,8 +96,9 @@ def test_rose_to_ros_and_baker_match_scipy(command: list[str]) -> None:
     ],
     ids=["double-dash", "angles-equals", "angles-quoted", "bare", "commas"],
 )
-def test_negative_angles(command: list[str], angle_args: list[str]) -> None:
-    report = convert_json(command, "--from", "rose", "--to", "xyz", "--degrees", *angle_args)
+def test_negative_angles(angle_args: list[str]) -> None:
+    report = convert_json(run_in_process, "--from", "rose", "--to", "xyz", "--degrees",
+                          *angle_args)  # fmt: skip
     expected = Rotation.from_euler("ZYX", [-30, 45, 10], degrees=True)
     assert_allclose(report["matrix"], expected.as_matrix(), atol=1e-14)
     assert_allclose(report["conversions"][0]["angles"], [10, 45, -30], atol=1e-10)
@@ -103,7 +109,7 @@ def test_sequences_in_radians_match_scipy(source: str) -> None:
     angles = [0.4, 1.1, -2.3]
     targets = {"zyz": "zyz", "YXZ": "YXZ", "ros": "xyz", "Baker": "YZX"}
     options = [word for name in targets for word in ("--to", name)]
-    report = convert_json(PYTHON_M, "--from", source, *options, "--", *map(str, angles))
+    report = convert_json(run_in_process, "--from", source, *options, "--", *map(str, angles))
     source_seq = "YZX" if source == "baker" else source
     R = Rotation.from_euler(source_seq, angles)
     assert_allclose(report["matrix"], R.as_matrix(), atol=1e-14)
@@ -113,8 +119,9 @@ def test_sequences_in_radians_match_scipy(source: str) -> None:
         assert_allclose(conversion["angles"], R.as_euler(seq), atol=1e-10)
 
 
-def test_text_output_names_the_angles(command: list[str]) -> None:
-    result = convert(command, "--from", "baker", "--to", "rose", "--degrees", "40", "25", "-15")
+def test_text_output_names_the_angles() -> None:
+    result = convert(run_in_process, "--from", "baker", "--to", "rose", "--degrees",
+                     "40", "25", "-15")  # fmt: skip
     assert result.returncode == 0, result.stderr
     lines = result.stdout.splitlines()
     assert lines[0] == "from baker (YZX): heading = 40°, attitude = 25°, bank = -15°"
@@ -129,8 +136,8 @@ def test_text_output_names_the_angles(command: list[str]) -> None:
 # --- gimbal lock ---------------------------------------------------------------------------------
 
 
-def test_gimbal_lock_in_words(command: list[str]) -> None:
-    result = convert(command, "--from", "rose", "--to", "rose", "--degrees", "30", "90", "10")
+def test_gimbal_lock_in_words(entry_point: Runner) -> None:
+    result = convert(entry_point, "--from", "rose", "--to", "rose", "--degrees", "30", "90", "10")
     assert result.returncode == 0
     assert "Traceback" not in result.stderr
     assert "Warning" not in result.stderr
@@ -141,11 +148,11 @@ def test_gimbal_lock_in_words(command: list[str]) -> None:
     ) in result.stdout
 
 
-def test_baker_pole_from_a_matrix(command: list[str]) -> None:
+def test_baker_pole_from_a_matrix() -> None:
     # attitude +90° (north pole): Baker keeps heading + bank in heading, bank = 0
     R = Rotation.from_euler("YZX", [40, 90, 10], degrees=True).as_matrix()
     numbers = ",".join(repr(float(x)) for x in R.ravel())
-    report = convert_json(command, "--to", "baker", "--degrees", f"--matrix={numbers}")
+    report = convert_json(run_in_process, "--to", "baker", "--degrees", f"--matrix={numbers}")
     baker = report["conversions"][0]
     assert baker["gimbal_lock"] is True
     assert_allclose(baker["angles"], [50, 90, 0], atol=1e-9)
@@ -156,8 +163,8 @@ def test_baker_pole_from_a_matrix(command: list[str]) -> None:
 # --- matrix in -----------------------------------------------------------------------------------
 
 
-def test_matrix_numbers(command: list[str]) -> None:
-    report = convert_json(command, "--to", "rose", "--to", "XYZ", "--degrees",
+def test_matrix_numbers() -> None:
+    report = convert_json(run_in_process, "--to", "rose", "--to", "XYZ", "--degrees",
                           "--matrix", "0", "-1", "0", "1", "0", "0", "0", "0", "1")  # fmt: skip
     R = np.array([[0, -1, 0], [1, 0, 0], [0, 0, 1]], dtype=float)
     rose, xyz = report["conversions"]
@@ -166,37 +173,47 @@ def test_matrix_numbers(command: list[str]) -> None:
     assert_allclose(xyz["angles"], expected, atol=1e-10)
 
 
-def test_matrix_file_and_stdin(command: list[str], tmp_path: Path) -> None:
+def test_matrix_file_and_stdin(tmp_path: Path) -> None:
     R = Rotation.from_euler("ZYX", [-70, 35, 120], degrees=True).as_matrix()
     text = "# a rotation, printed by numpy\n" + np.array2string(R, precision=17) + "\n"
     path = tmp_path / "rotation.txt"
     path.write_text(text, encoding="utf-8")
-    from_file = convert_json(command, "--to", "ros", "--degrees", "--matrix-file", str(path))
-    from_stdin = convert_json(command, "--to", "ros", "--degrees", "--matrix-file", "-",
+    from_file = convert_json(run_in_process, "--to", "ros", "--degrees",
+                             "--matrix-file", str(path))  # fmt: skip
+    from_stdin = convert_json(run_in_process, "--to", "ros", "--degrees", "--matrix-file", "-",
                               stdin=text)  # fmt: skip
     for report in (from_file, from_stdin):
         assert_allclose(report["conversions"][0]["angles"], [120, 35, -70], atol=1e-9)
 
 
-def test_repair_accepts_a_rounded_matrix(command: list[str]) -> None:
+def rounded_matrix() -> str:
+    """A rotation's nine entries rounded to 4 decimals: 1e-5 off, beyond the default atol."""
     R = Rotation.from_euler("ZYX", [10, 20, 30], degrees=True).as_matrix()
-    rounded = ",".join(f"{x:.4f}" for x in R.ravel())
-    refused = convert(command, "--to", "rose", f"--matrix={rounded}")
+    return ",".join(f"{x:.4f}" for x in R.ravel())
+
+
+def test_a_matrix_that_is_not_a_rotation_is_refused_in_one_line(entry_point: Runner) -> None:
+    refused = convert(entry_point, "--to", "rose", f"--matrix={rounded_matrix()}")
+    assert refused.returncode == 1
     assert_clean_failure(refused, "not a rotation matrix", "--repair")
-    report = convert_json(command, "--to", "rose", "--degrees", "--repair", f"--matrix={rounded}")
+
+
+def test_repair_accepts_a_rounded_matrix() -> None:
+    report = convert_json(run_in_process, "--to", "rose", "--degrees", "--repair",
+                          f"--matrix={rounded_matrix()}")  # fmt: skip
     assert_allclose(report["conversions"][0]["angles"], [10, 20, 30], atol=1e-2)
 
 
-def test_list_and_help(command: list[str]) -> None:
-    listing = convert(command, "--list")
+def test_list_and_help() -> None:
+    listing = convert(run_in_process, "--list")
     assert listing.returncode == 0
     for word in ("rose", "baker", "ros", "aerospace", "ZYX", "YZX", "xyz", "zyz"):
         assert word in listing.stdout
-    helped = convert(command, "--help")
+    helped = convert(run_in_process, "--help")
     assert helped.returncode == 0
     assert "eulerlib convert --from rose --to xyz --degrees -- -30 45 10" in helped.stdout
     assert "--angles=-30,45,10" in helped.stdout
-    top = subprocess.run([*command, "--help"], capture_output=True, text=True, check=False)
+    top = run_in_process("--help")
     assert top.returncode == 0
     assert "convert" in top.stdout
 
@@ -229,19 +246,18 @@ def test_list_and_help(command: list[str]) -> None:
     ],
 )
 def test_bad_arguments_fail_cleanly(args: list[str], words: list[str]) -> None:
-    assert_clean_failure(convert(PYTHON_M, *args), *words)
+    assert_clean_failure(convert(run_in_process, *args), *words)
 
 
-def test_bad_matrix_files_fail_cleanly(command: list[str], tmp_path: Path) -> None:
+def test_bad_matrix_files_fail_cleanly(tmp_path: Path) -> None:
+    def from_file(path: str, stdin: str | None = None) -> Outcome:
+        return convert(run_in_process, "--to", "rose", "--matrix-file", path, stdin=stdin)
+
     two_rows = tmp_path / "two_rows.txt"
     two_rows.write_text("1 0 0\n0 1 0\n", encoding="utf-8")
-    assert_clean_failure(convert(command, "--to", "rose", "--matrix-file", str(two_rows)),
-                         "3 rows of 3 numbers")  # fmt: skip
+    assert_clean_failure(from_file(str(two_rows)), "3 rows of 3 numbers")
     ragged = tmp_path / "ragged.txt"
     ragged.write_text("1 0 0\n0 1\n0 0 1\n", encoding="utf-8")
-    assert_clean_failure(convert(command, "--to", "rose", "--matrix-file", str(ragged)),
-                         "3 + 2 + 3")  # fmt: skip
-    assert_clean_failure(convert(command, "--to", "rose", "--matrix-file", str(tmp_path)),
-                         "folder")  # fmt: skip
-    assert_clean_failure(convert(command, "--to", "rose", "--matrix-file", "-", stdin="1 2\n"),
-                         "stdin")  # fmt: skip
+    assert_clean_failure(from_file(str(ragged)), "3 + 2 + 3")
+    assert_clean_failure(from_file(str(tmp_path)), "folder")
+    assert_clean_failure(from_file("-", stdin="1 2\n"), "stdin")

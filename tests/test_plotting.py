@@ -25,6 +25,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 from matplotlib.animation import FuncAnimation
+from matplotlib.figure import Figure
 from mpl_toolkits.mplot3d.art3d import Line3D, Text3D
 from scipy.spatial.transform import Rotation
 
@@ -740,16 +741,20 @@ CALLABLES = {
 }
 
 
-def valid_arguments(name: str) -> dict[str, Any]:
-    """A valid call of each public plotting function, all arguments by keyword."""
+def valid_arguments(name: str, ax: Any = None) -> dict[str, Any]:
+    """A valid call of each public plotting function, all arguments by keyword.
+
+    The functions that draw into a given axes get ``ax``, or by default a new figure with a 3D
+    axes, the most expensive argument here; the others get none.
+    """
+    if name in ("draw_frame", "draw_aircraft"):
+        return {"ax": new_3d_axes() if ax is None else ax}
     angles = {"angles": [30.0, 20.0, 10.0], "degrees": True}
     return {
         "new_3d_axes": {},
-        "draw_frame": {"ax": new_3d_axes()},
         "plot_frames": {"rotations": np.eye(3)},
         "plot_sequence_steps": angles,
         "aircraft_segments": {},
-        "draw_aircraft": {"ax": new_3d_axes()},
         "plot_body_rotation": {"R": np.eye(3)},
         "gimbal_ring_normals": angles,
         "gimbal_ring_points": angles,
@@ -791,11 +796,37 @@ BAD_CASES = [
 ]
 
 
+@pytest.fixture(scope="module")
+def blank_axes_store() -> dict[str, Any]:
+    return {}
+
+
+@pytest.fixture
+def blank_axes(blank_axes_store: dict[str, Any]) -> Any:
+    """A 3D axes as ``new_3d_axes`` makes it, with nothing drawn into it yet.
+
+    The bad-argument cases of the functions that draw into an axes share one: each case checks
+    that its call left the axes as it found it. Should a call have drawn into it (that case
+    fails), the next case gets a new one. Its figure is not pyplot's, so pyplot's list of
+    figures is the same with it as without it.
+    """
+    ax = blank_axes_store.get("ax")
+    if ax is None or len(ax.get_children()) != blank_axes_store["children"]:
+        ax = new_3d_axes(Figure(figsize=(5, 5)))
+        blank_axes_store.update(ax=ax, children=len(ax.get_children()))
+    return ax
+
+
 @pytest.mark.parametrize(("name", "parameter", "bad", "error"), BAD_CASES)
 def test_a_bad_argument_is_named_and_leaves_no_figure_behind(
-    name: str, parameter: str, bad: Any, error: type[Exception], capsys: pytest.CaptureFixture[str]
+    name: str,
+    parameter: str,
+    bad: Any,
+    error: type[Exception],
+    blank_axes: Any,
+    capsys: pytest.CaptureFixture[str],
 ) -> None:
-    arguments = valid_arguments(name)
+    arguments = valid_arguments(name, ax=blank_axes)
     arguments[parameter] = stand_in(bad)
     given_ax = arguments.get("ax") if parameter != "ax" else None
     drawn_before = len(given_ax.get_children()) if given_ax is not None else 0

@@ -1,12 +1,12 @@
 """The test command catches what it promises to catch, tried on a small course built here.
 
 A scratch repository gets this project's pytest configuration (``pyproject.toml``, the
-``tests/conftest.py`` with the checks around the session, the nbval sanitizer) and one notebook
-whose cells misbehave on purpose: one prints something other than its stored output, one writes
-a file next to the notebook, and together they take longer than the (lowered) time allowed to a
-notebook. pytest runs there once, in one process (the course's own runs use pytest-xdist, where
-the checks are made in the controller only: see the last test); the tests below read what it
-reported.
+``conftest.py`` that loads the plugins, the ``tests/conftest.py`` with the checks around the
+session, the nbval sanitizer) and one notebook whose cells misbehave on purpose: one prints
+something other than its stored output, one writes a file next to the notebook, and together
+they take longer than the (lowered) time allowed to a notebook. pytest runs there once, in one
+process (the course's own runs use pytest-xdist, where the checks are made in the controller
+only: see the last test); the tests below read what it reported.
 """
 
 from __future__ import annotations
@@ -19,6 +19,7 @@ from types import SimpleNamespace
 
 import nbformat
 import pytest
+
 from conftest import SessionChecks, notebook_of, pytest_configure, repository_changes, snapshot
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -47,7 +48,8 @@ def session(tmp_path_factory: pytest.TempPathFactory) -> subprocess.CompletedPro
     root = tmp_path_factory.mktemp("scratch") / "repository"
     (root / "tests").mkdir(parents=True)
     (root / "notebooks").mkdir()
-    shutil.copy(ROOT / "pyproject.toml", root)
+    for name in ("pyproject.toml", "conftest.py"):
+        shutil.copy(ROOT / name, root)
     for name in ("conftest.py", "nbval_sanitize.cfg"):
         shutil.copy(ROOT / "tests" / name, root / "tests")
     nbformat.write(misbehaving_notebook(), str(root / "notebooks" / "01_misbehaving.ipynb"))

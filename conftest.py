@@ -1,0 +1,91 @@
+"""How pytest runs in this repository, and three costs it no longer pays in every process.
+
+The test command starts several pytest processes (the controller, one worker per core, and the
+sessions some tests run). Three costs there had nothing to do with the tests:
+
+* **Assertion rewriting of every installed plugin.** When pytest loads plugins automatically,
+  it rewrites the asserts of each plugin's whole distribution as it is imported, Hypothesis'
+  80 modules and AnyIO's 30 among them. With ``PYTHONDONTWRITEBYTECODE`` set (as CI sets it)
+  pytest cannot cache the result, so every process did it again: about a second each.
+  ``pyproject.toml`` therefore turns automatic loading off (``--disable-plugin-autoload``) and
+  names the plugins the suite uses, ``-p xdist`` and ``-p hypothesispytest``; nbval is loaded
+  here (``pytest_plugins``), after the step below. The asserts of the tests and of this file
+  are rewritten as before.
+* **rfc3987_syntax.** nbval reads notebooks with nbformat, which imports jsonschema, which
+  imports rfc3987_syntax for its IRI format checks; that package builds three Earley parsers
+  when imported, about a second of work per process. Nothing in a test session checks an IRI
+  (nbformat validates notebooks against a draft-4 schema, with no format checker), so
+  :func:`defer_rfc3987_syntax` puts off importing it until a first IRI check asks for it.
+* **The garbage collector going over the same objects again and again.** Collecting the tests
+  imports SymPy, matplotlib, SciPy and Hypothesis and makes some 4000 test items, objects that
+  live all session; Python's cyclic garbage collector walked them again at every full
+  collection, during the collection of the tests and after it. It is therefore off while the
+  tests are collected (which makes next to no garbage), and afterwards what is alive is frozen
+  out of its view (:func:`pytest_collection`). What the tests throw away is reclaimed as
+  before: by reference counting at once, and in cycles by the collector, which runs as often
+  as before.
+
+This file is pytest configuration only; the shared fixtures and the checks around the session
+are in ``tests/conftest.py``.
+"""
+
+from __future__ import annotations
+
+import gc
+import importlib
+import importlib.util
+import sys
+import types
+from collections.abc import Generator
+from typing import Any
+
+import pytest
+
+#: The package whose import is put off, and the one function jsonschema takes from it.
+DEFERRED = "rfc3987_syntax"
+
+
+def defer_rfc3987_syntax() -> None:
+    """Stand in for ``rfc3987_syntax`` in ``sys.modules`` until it is first used.
+
+    The stand-in forwards ``is_valid_syntax`` (all jsonschema imports from it) and any other
+    attribute to the real package, which it imports at that moment. Nothing changes when the
+    package is not installed or is already imported.
+    """
+    if DEFERRED in sys.modules or importlib.util.find_spec(DEFERRED) is None:
+        return
+    stand_in = types.ModuleType(DEFERRED, "Stands in for rfc3987_syntax until it is used.")
+
+    def real() -> Any:
+        if sys.modules.get(DEFERRED) is stand_in:
+            del sys.modules[DEFERRED]
+        return importlib.import_module(DEFERRED)
+
+    def is_valid_syntax(term: str, value: str) -> bool:
+        return bool(real().is_valid_syntax(term, value))
+
+    def __getattr__(name: str) -> Any:
+        if name.startswith("__"):  # the import system asking what kind of module this is
+            raise AttributeError(name)
+        return getattr(real(), name)
+
+    stand_in.is_valid_syntax = is_valid_syntax
+    stand_in.__getattr__ = __getattr__
+    sys.modules[DEFERRED] = stand_in
+
+
+defer_rfc3987_syntax()
+
+pytest_plugins = ["nbval.plugin"]
+
+
+@pytest.hookimpl(wrapper=True)
+def pytest_collection(session: pytest.Session) -> Generator[None, object, object]:
+    """Collect the tests with the garbage collector off, then collect once and freeze."""
+    gc.disable()
+    try:
+        return (yield)
+    finally:
+        gc.enable()
+        gc.collect()
+        gc.freeze()
