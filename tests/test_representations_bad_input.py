@@ -8,12 +8,12 @@ quaternion or an axis must not be zero. Flags and tolerances are held to the rul
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 import pytest
+from bad_numbers import bad_values
 from numpy.testing import assert_array_equal
 from scipy.spatial.transform import Rotation
 
@@ -54,27 +54,6 @@ ARGUMENTS: dict[str, tuple[Callable[[Any], object], str, Any]] = {
     "slerp, t": (lambda x: slerp(R0, R0.T, x), "t", 0.5),
 }
 MATRIX_ARGUMENTS = {key: value for key, value in ARGUMENTS.items() if value[1] in ("R", "R0", "R1")}
-
-
-def bad_values(valid: Any) -> list[tuple[object, type[Exception], str]]:
-    """Values that break the rules, each with its exception and the words after the name."""
-    array = np.asarray(valid, dtype=float)
-    with_nan, with_inf, huge = array.copy(), array.copy(), array.astype(object)
-    with_nan.flat[-1] = np.nan
-    with_inf.flat[0] = -np.inf
-    huge.flat[0] = 10**400
-    last = tuple(int(i) for i in np.unravel_index(array.size - 1, array.shape))
-    where = f" at index {last}" if array.ndim else ""
-    return [
-        ("text", TypeError, "must be numbers, got text"),
-        (None, TypeError, "must be real numbers; got an array of objects that are not numbers"),
-        (array.astype(bool), TypeError, "must be real numbers, got booleans"),
-        (array + 1j, TypeError, "must be real numbers, got complex numbers"),
-        (np.ma.masked_array(array), TypeError, "is a masked array"),
-        (with_nan, ValueError, re.escape(f"must be finite, got nan{where}")),
-        (with_inf, ValueError, "must be finite, got -inf"),
-        (huge.tolist(), ValueError, "holds a number too large for a float"),
-    ]
 
 
 @pytest.mark.parametrize("key", sorted(ARGUMENTS))
