@@ -23,7 +23,6 @@ from pathlib import Path
 from typing import Any
 
 import nbformat
-import numpy as np
 import pytest
 
 from eulerlib.course.exercises import ChoiceJudge, Exercise, exercises
@@ -180,9 +179,8 @@ def test_student_copy_diagnoses_every_answer_of_the_test_tables(path: Path) -> N
     copy = student_copy(read(path))
     first = next(cell for cell in copy.cells if cell.cell_type == "code")
     namespace: dict[str, Any] = {}
-    with np.printoptions():  # the notebook's own print options must not leak into other tests
-        run(without_magics(first.source), namespace)
-        check_every_example(path, copy, namespace)
+    run(without_magics(first.source), namespace)  # its print options: see tests/conftest.py
+    check_every_example(path, copy, namespace)
 
 
 def check_every_example(path: Path, copy: Any, namespace: dict[str, Any]) -> None:
