@@ -56,6 +56,10 @@ def _exponents(part: Array) -> NDArray[np.int32]:
 def lengths(components: Array) -> Array:
     """Euclidean length of each column of ``components`` (shape ``(k, n)``), at any scale.
 
+    A length above the largest float (about 1.8e308), which only a vector with entries near it
+    can have, comes out as ``inf``, silently: :func:`refuse_overlong` turns it into an error
+    where the length must be a number.
+
     Examples
     --------
     >>> import numpy as np
@@ -68,8 +72,26 @@ def lengths(components: Array) -> Array:
     if redo.size:
         part = components[:, redo]
         exponent = _exponents(part)
-        length[redo] = np.ldexp(np.sqrt(squared_lengths(np.ldexp(part, -exponent))), exponent)
+        unit_size = np.sqrt(squared_lengths(np.ldexp(part, -exponent)))
+        with np.errstate(over="ignore"):  # a length above the largest float: inf
+            length[redo] = np.ldexp(unit_size, exponent)
     return length
+
+
+def refuse_overlong(length: Array, name: str, lead: tuple[int, ...], selection: Selection) -> None:
+    """Raise ``ValueError`` if a length from :func:`lengths` is above the largest float.
+
+    The message names ``name`` and the index of the first such vector in the caller's array
+    of leading shape ``lead``, from which ``selection`` took the columns.
+    """
+    if not length.size or np.isfinite(length.max()):
+        return
+    first = int(np.flatnonzero(np.isinf(length))[0])
+    where = _index_text(lead, selected_index(selection, first))
+    raise ValueError(
+        f"{name}{where} has a length above the largest float (about 1.8e308): the angle of "
+        "its turn is not a number"
+    )
 
 
 def scaled_to_unit_size(

@@ -49,7 +49,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._blocks import block_slices
-from eulerlib._broadcast import broadcast_blocks, broadcast_shape
+from eulerlib._broadcast import Selection, broadcast_blocks, broadcast_shape
 from eulerlib._quaternion_kernels import (
     entries_to_quaternions,
     quaternions_to_entries,
@@ -59,7 +59,7 @@ from eulerlib._quaternion_kernels import (
     unit_axes,
 )
 from eulerlib._trig import half_angle_pair
-from eulerlib._unit import TINY, lengths, scaled_to_unit_size
+from eulerlib._unit import TINY, lengths, refuse_overlong, scaled_to_unit_size
 from eulerlib._validation import (
     ROTATION_ATOL,
     as_float_array,
@@ -256,14 +256,23 @@ def rotvec_to_matrix(v: ArrayLike, *, degrees: bool = False) -> NDArray[np.float
     TypeError
         If ``v`` is not real numbers or ``degrees`` is not a bool.
     ValueError
-        If ``v`` does not have shape ``(..., 3)`` or has NaN or infinite entries.
+        If ``v`` does not have shape ``(..., 3)``, has NaN or infinite entries, or a vector is
+        longer than the largest float (about 1.8e308; the message gives its index).
 
     Notes
     -----
     With θ = ``|v|``, the quaternion is ``(cos(θ/2), (sin(θ/2) / θ) v)``, and the matrix is
     built from it as in :func:`axis_angle_to_matrix`. ``sin(θ/2) / θ`` is a quotient of two
     accurate numbers, so rotation vectors as short as 1e-300 give matrices accurate in every
-    entry; the length itself is found without underflow.
+    entry; the length itself is found without underflow or overflow, scaled by a power of two.
+
+    Long vectors turn by their length rounded to a float, reduced modulo 2π (or modulo 360°,
+    exactly) with no further error, so ``(3, 4, 0) · 2**1020`` turns by ``5 · 2**1020`` rad
+    about ``(0.6, 0.8, 0)``, where SciPy's ``from_rotvec`` gives NaN. Beyond about 1e16 rad
+    one unit in the last place of the length is more than a turn, so such a rotation is exact
+    for the float given but says little about the motion it came from. A vector longer than the
+    largest float has no float length to reduce; it is refused rather than given an angle
+    that no input determines.
 
     Examples
     --------
@@ -276,23 +285,38 @@ def rotvec_to_matrix(v: ArrayLike, *, degrees: bool = False) -> NDArray[np.float
     array([[ 1.,  0.,  0.],
            [ 0., -1.,  0.],
            [ 0.,  0., -1.]])
+    >>> rotvec_to_matrix([1.7e308, 1.7e308, 0.0])               # |v| is not a float
+    Traceback (most recent call last):
+    ...
+    ValueError: v has a length above the largest float (about 1.8e308): the angle of its turn is
+    not a number
     """
     in_degrees = check_flag(degrees, "degrees")
     vectors = as_vectors(v, "v")
     flat = vectors.reshape(-1, 3)
     out = np.empty((flat.shape[0], 9))
     for block in block_slices(flat.shape[0]):
-        out[block] = rotvecs_to_entries(np.ascontiguousarray(flat[block].T), in_degrees).T
+        rows = np.ascontiguousarray(flat[block].T)
+        out[block] = rotvecs_to_entries(rows, in_degrees, "v", vectors.shape[:-1], block).T
     return out.reshape(*vectors.shape[:-1], 3, 3)
 
 
-def rotvecs_to_entries(rows: NDArray[np.float64], degrees: bool) -> NDArray[np.float64]:
+def rotvecs_to_entries(
+    rows: NDArray[np.float64],
+    degrees: bool,
+    name: str,
+    lead: tuple[int, ...],
+    selection: Selection,
+) -> NDArray[np.float64]:
     """Body of :func:`rotvec_to_matrix` for one block of checked rotation vectors.
 
     ``rows`` holds the vectors as columns, shape ``(3, n)``; returns the entries of their
     matrices laid out as :func:`eulerlib._validation.matrix_entries` does, shape ``(9, n)``.
+    A vector longer than the largest float is refused, naming ``name`` and its index in the
+    caller's array of leading shape ``lead``, from which ``selection`` took the block.
     """
     length = lengths(rows)
+    refuse_overlong(length, name, lead, selection)
     a, b = half_angle_pair(length, degrees)
     # (a, b v / |v|) is a multiple of (cos(θ/2), sin(θ/2) v / |v|); the zero vector gives
     # b / TINY = 0 and so the identity

@@ -101,9 +101,9 @@ def integrate_angular_velocity(
         If an argument is not real numbers, ``frame`` is not a string, or a flag is not a bool.
     ValueError
         If a shape is wrong, the leading shapes do not broadcast, a value is NaN or infinite,
-        ``omega * dt`` overflows, ``R`` is not a rotation within ``atol`` (or cannot be
-        repaired), ``frame`` is not one of the accepted words, or ``atol`` is not a finite
-        number ≥ 0.
+        ``omega * dt`` overflows or has a length above the largest float, ``R`` is not a
+        rotation within ``atol`` (or cannot be repaired), ``frame`` is not one of the accepted
+        words, or ``atol`` is not a finite number ≥ 0.
 
     Notes
     -----
@@ -141,7 +141,9 @@ def integrate_angular_velocity(
         with np.errstate(over="ignore", invalid="ignore"):
             turns = flat_omega[on_omega].T * flat_dt[on_dt]  # rotation vectors, shape (3, n)
         _refuse_overflow(turns, shape, block.start, on_omega, on_dt)
-        entries = rotvecs_to_entries(np.ascontiguousarray(turns), in_degrees)
+        entries = rotvecs_to_entries(
+            np.ascontiguousarray(turns), in_degrees, "omega * dt", shape, block
+        )
         step = entries.T.reshape(-1, 3, 3)
         start = flat_R[on_R]
         out[block] = np.matmul(step, start) if in_space else np.matmul(start, step)

@@ -1,0 +1,68 @@
+"""Finite input whose arithmetic overflows: the right answer, or a one-line ValueError.
+
+Every number here is finite, so it passes the rule for numbers; but a length, a product or a
+sum of such numbers may leave the range of float64 (above about 1.8e308). Each function then
+either computes the answer, by scaling by powers of two where the answer itself is in range,
+or refuses with a ``ValueError`` that names the argument, and never returns NaN or infinity,
+raises an ``IndexError`` or lets a ``RuntimeWarning`` escape: every test here turns warnings
+into errors.
+
+The oracles are mpmath (the exact turn by an exactly known angle, reduced modulo 360 with
+Python's integers for degrees) and the answers' own definitions typed in.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import mp_reference as mp
+import mpmath
+import numpy as np
+import pytest
+
+from eulerlib import (
+    integrate_angular_velocity,
+    is_rotation_matrix,
+    rotvec_to_matrix,
+)
+
+pytestmark = pytest.mark.filterwarnings("error")
+
+HUGE = 1.7e308
+# (3, 4, 0) · 2^1020 has the exact length 5 · 2^1020 ≈ 5.6e307, while its squares overflow
+THREE, FOUR = 3.0 * 2.0**1020, 4.0 * 2.0**1020
+LENGTH = 5 * 2**1020
+
+
+def exact_turn_about_3_4_0(angle: mpmath.mpf) -> mp.Matrix:
+    return mp.matrix_of_axis_angle(mp.mp_vector([0.6, 0.8, 0.0]), angle)
+
+
+def test_a_long_rotation_vector_turns_by_its_length() -> None:
+    # SciPy's from_rotvec gives NaN here; the length is in range, so is the answer
+    with mpmath.workdps(400):  # 1e307 radians reduced modulo 2π keeps 50 digits
+        angle = mpmath.mpf(LENGTH) % (2 * mpmath.pi)
+        exact = exact_turn_about_3_4_0(+angle)
+    assert mp.absolute_ulps(rotvec_to_matrix([THREE, FOUR, 0.0]), exact) <= 3.0
+
+
+def test_a_long_rotation_vector_in_degrees() -> None:
+    reduced = Fraction(LENGTH % 360)  # exact, in Python's integers
+    exact = exact_turn_about_3_4_0(mpmath.pi * reduced.numerator / reduced.denominator / 180)
+    assert mp.absolute_ulps(rotvec_to_matrix([THREE, FOUR, 0.0], degrees=True), exact) <= 3.0
+
+
+@pytest.mark.parametrize("degrees", [False, True])
+def test_a_rotation_vector_longer_than_any_float_is_refused(degrees: bool) -> None:
+    with pytest.raises(ValueError, match=r"^v has a length above") as caught:
+        rotvec_to_matrix([HUGE, HUGE, 0.0], degrees=degrees)
+    assert "\n" not in str(caught.value)
+    with pytest.raises(ValueError, match=r"^v at index \(1,\) has a length above"):
+        rotvec_to_matrix([[1.0, 0.0, 0.0], [HUGE, -HUGE, HUGE]], degrees=degrees)
+
+
+def test_a_step_whose_turn_is_longer_than_any_float_is_refused() -> None:
+    with pytest.raises(ValueError, match=r"^omega \* dt at index \(1,\) has a length above"):
+        integrate_angular_velocity(np.eye(3), [[0.0, 0.0, 1.0], [HUGE, HUGE, 0.0]], 1.0)
+    R = integrate_angular_velocity(np.eye(3), [THREE, FOUR, 0.0], 1.0)
+    assert bool(is_rotation_matrix(R, atol=1e-15))
