@@ -44,6 +44,7 @@ from eulerlib._quaternion_kernels import (
 from eulerlib._unit import TINY, lengths
 from eulerlib._validation import (
     ROTATION_ATOL,
+    _index_text,
     as_float_array,
     as_rotations,
     matrix_entries,
@@ -71,7 +72,9 @@ def slerp(
     t : array_like, shape (...)
         Fractions of the way. Values outside [0, 1] extrapolate: the turn continues about the
         same axis at the same rate (``t = 2`` turns twice as far as ``t = 1``, ``t = -1`` as far
-        the other way).
+        the other way). The turn ``t θ`` is computed in floats and reduced modulo 2π with no
+        further error, so a huge ``t`` gives the rotation by that float angle; where ``t θ``
+        is above the largest float there is no such angle, and ``t`` is refused.
     validate, repair, atol
         As in :func:`eulerlib.matrix_to_euler`, for ``R0`` and ``R1``.
 
@@ -88,8 +91,9 @@ def slerp(
     TypeError
         If an argument is not real numbers or a flag is not a bool.
     ValueError
-        If a shape is wrong, the shapes do not broadcast, a value is not finite, or ``R0`` or
-        ``R1`` is not a rotation within ``atol`` (or cannot be repaired).
+        If a shape is wrong, the shapes do not broadcast, a value is not finite, ``R0`` or
+        ``R1`` is not a rotation within ``atol`` (or cannot be repaired), or ``t`` times the
+        angle from ``R0`` to ``R1`` is above the largest float (the message gives the index).
 
     Notes
     -----
@@ -131,7 +135,10 @@ def slerp(
         # R0ᵀ R1 turns by θ = 2 atan2(|v|, w) about v / |v|. The turn by t θ about the same axis
         # has a quaternion that is a multiple of (1, tan(t θ / 2) v / |v|).
         sine = lengths(relative[1:])
-        tangent = np.tan(np.arctan2(sine, relative[0]) * flat_t[on_t])
+        with np.errstate(over="ignore"):
+            half_turn = np.arctan2(sine, relative[0]) * flat_t[on_t]  # t θ / 2
+        _refuse_overflow(half_turn, shape, block.start)
+        tangent = np.tan(half_turn)
         step = np.empty_like(relative)
         step[0] = 1.0
         np.multiply(relative[1:], tangent / np.maximum(sine, TINY), out=step[1:])
@@ -140,3 +147,17 @@ def slerp(
         product(start, turn, out[block].T)
         out[block] += 0.0  # no negative zeros
     return out.reshape(*shape, 3, 3)
+
+
+def _refuse_overflow(half_turn: NDArray[np.float64], shape: tuple[int, ...], offset: int) -> None:
+    """Raise ``ValueError`` if some ``t θ / 2`` of a block overflowed to infinity.
+
+    ``offset`` is the flat index of the block's first rotation in the result of ``shape``.
+    """
+    if not half_turn.size or np.isfinite(np.max(np.abs(half_turn))):
+        return
+    first = int(np.flatnonzero(np.isinf(half_turn))[0])
+    raise ValueError(
+        f"t{_index_text(shape, offset + first)} times the angle from R0 to R1 is above the "
+        "largest float (about 1.8e308): the turn to make is not a number"
+    )

@@ -19,11 +19,14 @@ import mp_reference as mp
 import mpmath
 import numpy as np
 import pytest
+from numpy.testing import assert_array_equal
 
 from eulerlib import (
     integrate_angular_velocity,
     is_rotation_matrix,
+    rot_z,
     rotvec_to_matrix,
+    slerp,
 )
 
 pytestmark = pytest.mark.filterwarnings("error")
@@ -66,3 +69,22 @@ def test_a_step_whose_turn_is_longer_than_any_float_is_refused() -> None:
         integrate_angular_velocity(np.eye(3), [[0.0, 0.0, 1.0], [HUGE, HUGE, 0.0]], 1.0)
     R = integrate_angular_velocity(np.eye(3), [THREE, FOUR, 0.0], 1.0)
     assert bool(is_rotation_matrix(R, atol=1e-15))
+
+
+def test_slerp_far_beyond_the_end_turns_by_t_times_the_angle() -> None:
+    # R0ᵀ R1 is the quarter turn about z, whose angle slerp finds as the float π/2; t · π/2
+    # is then exact in floats for t = 5 · 2^998, and mpmath reduces it modulo 2π
+    quarter = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+    t = 5.0 * 2.0**998
+    with mpmath.workdps(400):
+        angle = (mpmath.mpf(t) * mpmath.mpf(float(np.pi / 2))) % (2 * mpmath.pi)
+        exact = mp.matrix_of_axis_angle(mp.mp_vector([0.0, 0.0, 1.0]), +angle)
+    assert mp.absolute_ulps(slerp(np.eye(3), quarter, t), exact) <= 4.0
+
+
+def test_slerp_whose_turn_overflows_is_refused() -> None:
+    R1 = rot_z(3.0)  # θ = 3: t θ overflows for t = 1.7e308
+    with pytest.raises(ValueError, match=r"^t at index \(1,\) times the angle") as caught:
+        slerp(np.eye(3), R1, [0.5, HUGE])
+    assert "\n" not in str(caught.value)
+    assert_array_equal(slerp(R1, R1, HUGE), R1)  # no turn at all: any t stays at R1
