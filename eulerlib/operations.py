@@ -16,6 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._blocks import block_slices
+from eulerlib._overflow import overflowed, rescaled
 from eulerlib._validation import (
     ROTATION_ATOL,
     RotationCheck,
@@ -63,13 +64,16 @@ def rotate_points(
     TypeError
         If an input is not numeric.
     ValueError
-        If a shape is wrong, an entry is not finite, ``R`` is not a rotation, or the leading
-        axes do not broadcast.
+        If a shape is wrong, an entry is not finite, ``R`` is not a rotation, the leading
+        axes do not broadcast, or a rotated point has a coordinate above the largest float
+        (about 1.8e308; the message gives its index).
 
     Notes
     -----
     Eq 6 written out: ``x₁ = r₁₁x₀ + r₁₂y₀ + r₁₃z₀`` and likewise for y and z; that is the
-    matrix-vector product, computed here as one ``matmul`` over all points.
+    matrix-vector product, computed here as one ``matmul`` over all points. A point with
+    coordinates near the largest float is rotated again scaled down by a power of two where a
+    partial sum overflowed, so its rotated point is found whenever it is a float.
 
     Examples
     --------
@@ -88,6 +92,30 @@ def rotate_points(
             "broadcast: their leading axes (all but the last two of R, all but the last of "
             "points) must be compatible"
         ) from None
+    with np.errstate(over="ignore", invalid="ignore"):  # huge points: redone below
+        rotated = _rotated(matrices, vectors)
+    bad = overflowed(rotated)
+    if bad.size:
+        lead = rotated.shape[:-1]
+        if matrices.ndim == 2:
+            on_R, on_points = matrices, vectors.reshape(-1, 3)[bad]
+        else:  # gather the operands of those points only
+            where = np.unravel_index(bad, lead)
+            on_R = np.broadcast_to(matrices, (*lead, 3, 3))[where]
+            on_points = np.broadcast_to(vectors, (*lead, 3))[where]
+        flat = rotated.reshape(-1, 3)  # a view: both layouts of _rotated allow it
+        flat[bad] = rescaled(
+            lambda scale: _rotated(on_R, on_points * scale),
+            bad,
+            "points",
+            "the rotated point",
+            lead,
+        )
+    return rotated
+
+
+def _rotated(matrices: NDArray[np.float64], vectors: NDArray[np.float64]) -> NDArray[np.float64]:
+    """``R p`` for each point (rows of ``vectors``), broadcast over the leading axes."""
     if matrices.ndim == 2:  # one rotation for all points: a single BLAS product, R (3, n)
         columns = vectors.reshape(-1, 3).T
         turned: NDArray[np.float64] = (matrices @ columns).T.reshape(vectors.shape)

@@ -19,12 +19,14 @@ import mp_reference as mp
 import mpmath
 import numpy as np
 import pytest
-from numpy.testing import assert_array_equal
+from numpy.testing import assert_allclose, assert_array_equal
+from scipy.spatial.transform import Rotation
 
 from eulerlib import (
     integrate_angular_velocity,
     is_rotation_matrix,
     rot_z,
+    rotate_points,
     rotvec_to_matrix,
     slerp,
 )
@@ -88,3 +90,41 @@ def test_slerp_whose_turn_overflows_is_refused() -> None:
         slerp(np.eye(3), R1, [0.5, HUGE])
     assert "\n" not in str(caught.value)
     assert_array_equal(slerp(R1, R1, HUGE), R1)  # no turn at all: any t stays at R1
+
+
+def exact_product(R: np.ndarray, p: np.ndarray) -> np.ndarray:
+    """``R p`` in exact rationals, rounded once to float (inf where it is beyond the range)."""
+    rows = [sum(Fraction(float(a)) * Fraction(float(b)) for a, b in zip(r, p, strict=True))
+            for r in R]  # fmt: skip
+    return np.array(
+        [float(x) if abs(x) < 2**1024 else (np.inf if x > 0 else -np.inf) for x in rows]
+    )
+
+
+def test_rotating_huge_points_whose_turn_is_in_range() -> None:
+    # p lies on the axis of R, so R p = p; the first row's partial sums overflow on the way
+    p = np.array([HUGE, HUGE, -HUGE])
+    R = Rotation.from_rotvec(np.array([1.0, 1.0, -1.0]) / np.sqrt(3) * np.pi / 2).as_matrix()
+    exact = exact_product(R, p)
+    assert np.isfinite(exact).all()
+    cases = [
+        (R, p, exact),
+        (R, np.stack([p, -p, p / 2]), np.stack([exact, -exact, exact / 2])),
+        (np.stack([R, R]), p, np.stack([exact, exact])),
+    ]
+    for matrices, points, expected in cases:
+        assert_allclose(rotate_points(matrices, points), expected, rtol=4e-16, atol=0.0)
+
+
+def test_rotating_a_point_out_of_the_float_range_is_refused() -> None:
+    eighth = rot_z(45.0, degrees=True)  # (h, h, 0) turns to (0, √2 h, 0)
+    assert np.isinf(exact_product(eighth, np.array([HUGE, HUGE, 0.0]))).any()
+    with pytest.raises(
+        ValueError, match=r"^points is too large: the rotated point would"
+    ) as caught:
+        rotate_points(eighth, [HUGE, HUGE, 0.0])
+    assert "\n" not in str(caught.value)
+    with pytest.raises(ValueError, match=r"the rotated point at index \(1, 0\) would be above"):
+        rotate_points(eighth, [[[1.0, 2.0, 3.0]], [[HUGE, HUGE, 0.0]]])
+    with pytest.raises(ValueError, match=r"the rotated point at index \(1,\) would be above"):
+        rotate_points(np.stack([np.eye(3), eighth, eighth]), [HUGE, HUGE, 0.0])
