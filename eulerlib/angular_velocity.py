@@ -63,6 +63,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._broadcast import broadcast_blocks, broadcast_shape
 from eulerlib._euler_kernels import frame as relabelling
+from eulerlib._overflow import overflowed, rescaled
 from eulerlib._trig import sin_cos
 from eulerlib._validation import as_vectors, check_choice, check_flag
 from eulerlib.conventions import Convention, get_convention
@@ -116,7 +117,8 @@ def euler_rates_to_angular_velocity(
         or ``degrees`` is not a bool.
     ValueError
         If a shape is wrong, the leading shapes do not broadcast, a value is NaN or infinite,
-        or ``seq`` or ``frame`` is not one of the accepted words.
+        ``seq`` or ``frame`` is not one of the accepted words, or ``rates`` is so large that a
+        component of ``ω`` would be above the largest float (about 1.8e308).
 
     Notes
     -----
@@ -148,9 +150,10 @@ def euler_rates_to_angular_velocity(
     parsed = convention.parsed
     out = np.empty((math.prod(shape), 3))
     for block, (on_angles, on_rates) in broadcast_blocks(shape, leads):
-        out[block] = rates_to_omega(
-            flat_angles[on_angles], flat_rates[on_rates], parsed, in_space, in_degrees
-        )
+        out[block] = _omega_of_block(
+            flat_angles[on_angles], flat_rates[on_rates], parsed, in_space, in_degrees,
+            shape, block.start,
+        )  # fmt: skip
     return out.reshape(*shape, 3)
 
 
@@ -204,7 +207,8 @@ def angular_velocity_to_euler_rates(
         or a flag is not a bool.
     ValueError
         If a shape is wrong, the leading shapes do not broadcast, a value is NaN or infinite,
-        or ``seq`` or ``frame`` is not one of the accepted words.
+        ``seq`` or ``frame`` is not one of the accepted words, or ``omega`` is so large that a
+        rate would be above the largest float (about 1.8e308).
 
     Warns
     -----
@@ -245,12 +249,63 @@ def angular_velocity_to_euler_rates(
     out, middle = np.empty((count, 3)), np.empty(count)
     locked = np.empty(count, dtype=bool)
     for block, (on_angles, on_omega) in broadcast_blocks(shape, leads):
-        out[block], locked[block], middle[block] = omega_to_rates(
-            flat_angles[on_angles], flat_omega[on_omega], parsed, in_space, in_degrees, zero_first
-        )
+        out[block], locked[block], middle[block] = _rates_of_block(
+            flat_angles[on_angles], flat_omega[on_omega], parsed, in_space, in_degrees,
+            zero_first, shape, block.start,
+        )  # fmt: skip
     if warn_lock:
         warn_if_locked(convention, locked, middle, rates=True)
     return out.reshape(*shape, 3)
+
+
+# --- one block: the kernels, then the rare vectors whose result overflowed ----------------------
+
+
+def _omega_of_block(
+    angles: Array,
+    rates: Array,
+    parsed: Sequence,
+    space: bool,
+    degrees: bool,
+    shape: tuple[int, ...],
+    offset: int,
+) -> Array:
+    """:func:`rates_to_omega`, with rates near the largest float handled as
+    :mod:`eulerlib._overflow` says; ``offset`` is the block's first flat index in ``shape``."""
+    with np.errstate(over="ignore", invalid="ignore"):  # huge rates: redone below
+        omega = rates_to_omega(angles, rates, parsed, space, degrees)
+    bad = overflowed(omega)
+    if bad.size:
+        at, of = angles[bad], rates[bad]
+        omega[bad] = rescaled(
+            lambda scale: rates_to_omega(at, of * scale, parsed, space, degrees),
+            bad, "rates", "the angular velocity", shape, offset,
+        )  # fmt: skip
+    return omega
+
+
+def _rates_of_block(
+    angles: Array,
+    omega: Array,
+    parsed: Sequence,
+    space: bool,
+    degrees: bool,
+    zero_first: bool,
+    shape: tuple[int, ...],
+    offset: int,
+) -> tuple[Array, NDArray[np.bool_], Array]:
+    """:func:`omega_to_rates`, with ``omega`` near the largest float handled as
+    :mod:`eulerlib._overflow` says; ``offset`` is the block's first flat index in ``shape``."""
+    with np.errstate(over="ignore", invalid="ignore"):  # huge omega: redone below
+        rates, locked, middle = omega_to_rates(angles, omega, parsed, space, degrees, zero_first)
+    bad = overflowed(rates)
+    if bad.size:
+        at, of = angles[bad], omega[bad]
+        rates[bad] = rescaled(
+            lambda scale: omega_to_rates(at, of * scale, parsed, space, degrees, zero_first)[0],
+            bad, "omega", "the Euler rates", shape, offset,
+        )  # fmt: skip
+    return rates, locked, middle
 
 
 # --- the kernels, on one block of checked values ---------------------------------------------

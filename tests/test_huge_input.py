@@ -23,6 +23,8 @@ from numpy.testing import assert_allclose, assert_array_equal
 from scipy.spatial.transform import Rotation
 
 from eulerlib import (
+    angular_velocity_to_euler_rates,
+    euler_rates_to_angular_velocity,
     integrate_angular_velocity,
     is_rotation_matrix,
     rot_z,
@@ -128,3 +130,47 @@ def test_rotating_a_point_out_of_the_float_range_is_refused() -> None:
         rotate_points(eighth, [[[1.0, 2.0, 3.0]], [[HUGE, HUGE, 0.0]]])
     with pytest.raises(ValueError, match=r"the rotated point at index \(1,\) would be above"):
         rotate_points(np.stack([np.eye(3), eighth, eighth]), [HUGE, HUGE, 0.0])
+
+
+def rose_rates(angles: list[float], omega: list[float]) -> list[mpmath.mpf]:
+    """Rose's yaw, pitch and roll rates from the body rates (p, q, r), typed in, 50 digits."""
+    with mpmath.workdps(50):
+        _, v, u = (mpmath.mpf(a) for a in angles)
+        p, q, r = (mpmath.mpf(x) for x in omega)
+        yaw = (q * mpmath.sin(u) + r * mpmath.cos(u)) / mpmath.cos(v)
+        return [yaw, q * mpmath.cos(u) - r * mpmath.sin(u), p + yaw * mpmath.sin(v)]
+
+
+def rose_omega(angles: list[float], rates: list[float]) -> list[mpmath.mpf]:
+    """Rose's body rates (p, q, r) from the yaw, pitch and roll rates, typed in, 50 digits."""
+    with mpmath.workdps(50):
+        _, v, u = (mpmath.mpf(a) for a in angles)
+        dw, dv, du = (mpmath.mpf(x) for x in rates)
+        return [
+            du - dw * mpmath.sin(v),
+            dv * mpmath.cos(u) + dw * mpmath.sin(u) * mpmath.cos(v),
+            -dv * mpmath.sin(u) + dw * mpmath.cos(u) * mpmath.cos(v),
+        ]
+
+
+def test_euler_rates_of_a_huge_angular_velocity() -> None:
+    angles, omega = [0.3, 0.2, 0.1], [HUGE, -0.5 * HUGE, 0.25 * HUGE]
+    exact = np.array(rose_rates(angles, omega), dtype=float)
+    assert_allclose(angular_velocity_to_euler_rates(angles, omega), exact, rtol=1e-14)
+    rates = [0.25 * HUGE, -0.5 * HUGE, 0.5 * HUGE]
+    exact = np.array(rose_omega(angles, rates), dtype=float)
+    assert_allclose(euler_rates_to_angular_velocity(angles, rates), exact, rtol=1e-14)
+
+
+def test_euler_rates_beyond_the_float_range_are_refused() -> None:
+    # roll 45°: the yaw rate (q sin u + r cos u) / cos v is √2 · 1.7e308
+    angles = [[0.0, 0.0, 0.0], [0.0, 0.0, np.pi / 4]]
+    assert float(rose_rates(angles[1], [0, HUGE, HUGE])[0]) == np.inf
+    with pytest.raises(ValueError, match=r"^omega is too large: the Euler rates at index \(1,\)"):
+        angular_velocity_to_euler_rates(angles, [0.0, HUGE, HUGE])
+    # the body rate r = −v̇ sin u + ẇ cos u cos v is √2 · 1.7e308 at roll −45°
+    with pytest.raises(
+        ValueError, match=r"^rates is too large: the angular velocity at index \(1,\)"
+    ) as caught:
+        euler_rates_to_angular_velocity([[0.0, 0.0, 0.0], [0, 0, -np.pi / 4]], [HUGE, HUGE, 0])
+    assert "\n" not in str(caught.value)
