@@ -291,6 +291,33 @@ def determinant(entries: NDArray[np.float64]) -> NDArray[np.float64]:
     return result
 
 
+def shown(value: float, *, beyond: float, around: float = 0.0) -> str:
+    """``value`` as text for a message that compares it with a limit: with three significant
+    digits, or, when ``value`` lies farther than ``beyond`` from ``around``, as many more as it
+    takes for the decimal number the text shows to lie that far from the decimals of ``around``
+    and ``beyond`` too. Print the limit with ``repr``, which shows the same decimals.
+
+    Examples
+    --------
+    >>> shown(0.0123456, beyond=1e-6)
+    '0.0123'
+    >>> shown(1.0000000001e-6, beyond=1e-6)     # not "1e-06 exceeds the tolerance 1e-06"
+    '1.0000000001e-06'
+    >>> shown(1.0000004, beyond=3e-7, around=1.0), shown(1.0000001, beyond=3e-7, around=1.0)
+    ('1.0000004', '1')
+    """
+    if not abs(value - around) > beyond:
+        return f"{value:.3g}"
+    from decimal import Decimal  # only for messages: the arithmetic a reader does on the text
+
+    center, limit = Decimal(repr(float(around))), Decimal(repr(float(beyond)))
+    for digits in range(3, 18):
+        text = f"{value:.{digits}g}"
+        if abs(Decimal(text) - center) > limit:
+            return text
+    return repr(float(value))
+
+
 def _raise_unless_rotations(
     entries: NDArray[np.float64], name: str, atol: float, lead: tuple[int, ...], offset: int
 ) -> None:
@@ -312,17 +339,20 @@ def _raise_unless_rotations(
     bad = np.flatnonzero(~(error <= atol))
     if bad.size:
         first = int(bad[0])
+        measured = shown(float(error[first]), beyond=atol)
         raise ValueError(
             f"{name}{_index_text(lead, offset + first)} is not a rotation matrix: "
-            f"max |R Rᵀ − I| = {float(error[first]):.3g} exceeds the tolerance {atol:g}; pass "
+            f"max |R Rᵀ − I| = {measured} exceeds the tolerance {atol!r}; pass "
             "repair=True to use the nearest rotation instead"
         )
     off = np.flatnonzero(~(np.abs(det - 1.0) <= atol))
     if off.size:  # only reachable with a large atol: a matrix far from orthogonal passed
         first = int(off[0])
+        value = float(det[first])
         raise ValueError(
             f"{name}{_index_text(lead, offset + first)} has determinant "
-            f"{float(det[first]):.6g}, not 1 within the tolerance {atol:g}"
+            f"{shown(value, beyond=atol, around=1.0)}, which differs from 1 by "
+            f"{shown(abs(value - 1.0), beyond=atol)}, more than the tolerance {atol!r}"
         )
 
 
@@ -339,7 +369,7 @@ def nearest_rotations(
     far = np.flatnonzero(~(deviation <= REPAIR_LIMIT))
     if far.size:
         first = int(far[0])
-        values = ", ".join(f"{s:.3g}" for s in sigma[first])
+        values = ", ".join(shown(float(s), beyond=REPAIR_LIMIT, around=1.0) for s in sigma[first])
         where = f"{name}{_index_text(lead, offset + first)}"
         if sigma[first, -1] <= 1e-12 * max(float(sigma[first, 0]), 1e-300):
             rank = int(np.count_nonzero(sigma[first] > 1e-12 * sigma[first, 0]))
@@ -347,7 +377,8 @@ def nearest_rotations(
         else:
             reason = (
                 f"is too far from a rotation to repair: its singular values ({values}) differ "
-                f"from 1 by up to {float(deviation[first]):.3g}, more than {REPAIR_LIMIT:g}"
+                f"from 1 by up to {shown(float(deviation[first]), beyond=REPAIR_LIMIT)}, more "
+                f"than {REPAIR_LIMIT!r}"
             )
         raise ValueError(f"{where} {reason}; only a matrix close to a rotation can be repaired")
     Q = u @ vt
