@@ -91,6 +91,17 @@ def entries_to_quaternions(e: Array) -> Array:
     return q
 
 
+def normalize(q: Array) -> None:
+    """Divide, in place, each quaternion (column of ``q``, shape ``(4, n)``) by its length.
+
+    For quaternions near unit length, such as those of matrices that are rotations within a
+    tolerance, the length is ``sqrt`` of a sum of four squares without overflow or underflow,
+    and each component is divided once, so the result has length 1 to a unit or two in the last
+    place; a quaternion whose length rounds to 1 is left as it is.
+    """
+    q /= np.sqrt(np.einsum("ij,ij->j", q, q))
+
+
 def quaternions_to_entries(q: Array | tuple[Array, Array, Array, Array], out: Array) -> Array:
     """Write into ``out`` (shape ``(9, n)``) the rotation matrices of quaternions of any length.
 

@@ -346,7 +346,7 @@ def _raise_unless_rotations(
             "repair=True to use the nearest rotation instead"
         )
     off = np.flatnonzero(~(np.abs(det - 1.0) <= atol))
-    if off.size:  # only reachable with a large atol: a matrix far from orthogonal passed
+    if off.size:  # |det − 1| can be up to 1.5 times max |R Rᵀ − I|, or more with a large atol
         first = int(off[0])
         value = float(det[first])
         raise ValueError(

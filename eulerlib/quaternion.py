@@ -58,6 +58,7 @@ from eulerlib._blocks import block_slices
 from eulerlib._quaternion_kernels import (
     entries_to_quaternions,
     euler_to_quaternions,
+    normalize,
     quaternions_to_entries,
 )
 from eulerlib._unit import out_of_range, scaled_to_unit_size
@@ -211,7 +212,9 @@ def matrix_to_quaternion(
     -------
     ndarray, shape (..., 4)
         Unit quaternions with ``w >= 0``; at ``w = 0`` (half turns) the first nonzero of
-        ``x, y, z`` is positive. This is SciPy's ``as_quat(canonical=True)``.
+        ``x, y, z`` is positive. This is SciPy's ``as_quat(canonical=True)``. Their length is
+        1 to a unit or two in the last place for every matrix the check accepts, also one
+        that is a rotation only within ``atol``.
 
     Raises
     ------
@@ -226,7 +229,10 @@ def matrix_to_quaternion(
     Of ``4w² = 1 + trace`` and ``4x², 4y², 4z²`` (``1 + 2 r_ii − trace``) the largest is taken
     and its row of ``4 q qᵀ`` divided by twice its square root (S. W. Shepperd, 1978), so the
     result is accurate to a few units in the last place for every rotation, half turns and
-    turns near them included. See the module docstring.
+    turns near them included. See the module docstring. The quaternion is then divided by its
+    length: for a matrix ``R`` with ``R Rᵀ`` off the identity by ``δ``, Shepperd's formula
+    gives a length of ``1 ± δ``, and a "unit" quaternion that far from unit would carry the
+    matrix's error into every product and conversion that follows.
 
     Examples
     --------
@@ -243,7 +249,9 @@ def matrix_to_quaternion(
     lead = matrices.shape[:-2]
     out = np.empty((math.prod(lead), 4))
     for block, entries in rotation_entry_blocks(matrices, "R", check):
-        out[block] = stored(entries_to_quaternions(entries), first)
+        q = entries_to_quaternions(entries)
+        normalize(q)  # a matrix orthogonal only within atol gives |q| = 1 ± atol before this
+        out[block] = stored(q, first)
     return out.reshape(*lead, 4)
 
 
