@@ -67,7 +67,7 @@ from eulerlib._overflow import overflowed, rescaled
 from eulerlib._trig import sin_cos
 from eulerlib._validation import as_vectors, check_choice, check_flag
 from eulerlib.conventions import Convention, get_convention
-from eulerlib.gimbal_lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
+from eulerlib.gimbal_lock import GIMBAL_LOCK_TOLERANCE, LockTally
 from eulerlib.sequences import Sequence
 
 __all__ = ["FRAMES", "angular_velocity_to_euler_rates", "euler_rates_to_angular_velocity"]
@@ -246,15 +246,15 @@ def angular_velocity_to_euler_rates(
     parsed = convention.parsed
     zero_first = (convention.lock_zeroes == "first") == parsed.intrinsic
     count = math.prod(shape)
-    out, middle = np.empty((count, 3)), np.empty(count)
-    locked = np.empty(count, dtype=bool)
+    out, tally = np.empty((count, 3)), LockTally()  # the warning keeps 3 numbers, not a mask
     for block, (on_angles, on_omega) in broadcast_blocks(shape, leads):
-        out[block], locked[block], middle[block] = _rates_of_block(
+        out[block], locked, middle = _rates_of_block(
             flat_angles[on_angles], flat_omega[on_omega], parsed, in_space, in_degrees,
             zero_first, shape, block.start,
         )  # fmt: skip
+        tally.add(locked, middle)
     if warn_lock:
-        warn_if_locked(convention, locked, middle, rates=True)
+        tally.warn(convention, count, rates=True)
     return out.reshape(*shape, 3)
 
 
@@ -357,7 +357,7 @@ def omega_to_rates(
     ``angles`` and ``omega`` have shape ``(n, 3)``, the angles in ``seq`` order. ``zero_first``:
     at lock the rate of the first angle of the intrinsic form is 0 (else the third's). The
     middle angles of the locked attitudes are returned as
-    :func:`eulerlib.gimbal_lock.warn_if_locked` reads them (0 for the others, which it ignores).
+    :meth:`eulerlib.gimbal_lock.LockTally.add` reads them (0 for the others, which it ignores).
     """
     index, sign = relabelling(parsed)
     s, c = sin_cos(_intrinsic_order(angles, parsed), degrees)

@@ -104,19 +104,19 @@ def convert_angles(
         flat = flat[:, ::-1]
     count = math.prod(lead)
     result, locked = np.empty((count, 3)), np.empty(count, dtype=bool)
+    # an extrinsic sequence reads the intrinsic angles reversed: write them so, in place
+    intrinsic = result if parsed_out.intrinsic else result[:, ::-1]
     zero_first = (target.lock_zeroes == "first") == parsed_out.intrinsic
     for block in block_slices(count):
         matrices = np.empty((block.stop - block.start, 3, 3))
         fill_matrices(matrices, flat[block], parsed_in, in_degrees)
         if P is not None:
             relabel_into(matrices, matrices.copy(), P)
-        result[block], locked[block] = intrinsic_angles(
+        intrinsic[block], locked[block] = intrinsic_angles(
             matrix_entries(matrices), parsed_out, zero_first, GIMBAL_LOCK_TOLERANCE
         )
     if warn_lock:
-        warn_if_locked(target, locked, result[:, 1])
-    if not parsed_out.intrinsic:
-        result = np.ascontiguousarray(result[:, ::-1])
+        warn_if_locked(target, locked, result[:, 1])  # the middle angle either way
     if in_degrees:
         np.degrees(result, out=result)
     return result.reshape(*lead, 3)

@@ -252,15 +252,15 @@ def entry_blocks_to_angles(
     parsed = convention.parsed
     count = math.prod(lead)
     angles, locked = np.empty((count, 3)), np.empty(count, dtype=bool)
+    # an extrinsic sequence reads the intrinsic angles reversed: write them so, in place
+    intrinsic = angles if parsed.intrinsic else angles[:, ::-1]
     zero_first = (convention.lock_zeroes == "first") == parsed.intrinsic
     for block, entries in blocks:
-        angles[block], locked[block] = intrinsic_angles(
+        intrinsic[block], locked[block] = intrinsic_angles(
             entries, parsed, zero_first, GIMBAL_LOCK_TOLERANCE
         )
     if warn:
-        warn_if_locked(convention, locked, angles[:, 1])
-    if not parsed.intrinsic:
-        angles = angles[:, ::-1]
+        warn_if_locked(convention, locked, angles[:, 1])  # the middle angle either way
     if degrees:
-        angles = np.degrees(angles, out=angles if parsed.intrinsic else None)
-    return np.ascontiguousarray(angles).reshape(*lead, 3)
+        np.degrees(angles, out=angles)
+    return angles.reshape(*lead, 3)

@@ -216,6 +216,50 @@ def _stacklevel_outside_package() -> int:
     return level
 
 
+class LockTally:
+    """What the gimbal-lock warning of one call says, gathered block by block.
+
+    A call that converts many rotations in blocks adds each block's lock mask and middle
+    angles with :meth:`add`, then :meth:`warn` emits the one warning of the call. Only three
+    numbers are kept, whatever the size of the batch: how many rotations are locked, and the
+    least and greatest middle angle among them, which tell the poles.
+    """
+
+    def __init__(self) -> None:
+        self.count = 0
+        self.low = math.inf
+        self.high = -math.inf
+
+    def add(self, locked: NDArray[np.bool_], middle: NDArray[np.float64]) -> None:
+        """Count the locked rotations of a block; ``middle`` holds their middle angles in
+        radians, in [-π/2, π/2] for Tait–Bryan, [0, π] for proper Euler (other entries are
+        not read)."""
+        count = int(np.count_nonzero(locked))
+        if count:
+            at_lock = middle[locked]
+            self.count += count
+            self.low = min(self.low, float(at_lock.min()))
+            self.high = max(self.high, float(at_lock.max()))
+
+    def warn(self, convention: Convention, total: int, rates: bool = False) -> None:
+        """Emit one :class:`GimbalLockWarning` if a rotation of the ``total`` was locked.
+
+        ``rates`` says that angle rates, not angles, were computed (see
+        :attr:`GimbalLockWarning.rates`).
+        """
+        if not self.count:
+            return
+        extremes = (self.low, self.high)
+        if convention.parsed.proper:
+            found = {0 if angle < math.pi / 2 else 180 for angle in extremes}
+        else:
+            found = {90 if angle > 0 else -90 for angle in extremes}
+        order = (90, -90, 0, 180)
+        poles = tuple(pole for pole in order if pole in found)
+        warning = GimbalLockWarning(convention, self.count, total, poles, rates)
+        warnings.warn(warning, stacklevel=_stacklevel_outside_package())
+
+
 def warn_if_locked(
     convention: Convention,
     locked: NDArray[np.bool_],
@@ -224,23 +268,12 @@ def warn_if_locked(
 ) -> None:
     """Emit one :class:`GimbalLockWarning` if any rotation is locked.
 
-    ``middle`` holds the middle angles in radians, the same shape as ``locked``: in
-    [-π/2, π/2] for Tait–Bryan, [0, π] for proper Euler. ``rates`` says that angle rates, not
-    angles, were computed (see :attr:`GimbalLockWarning.rates`).
+    ``middle`` holds the middle angles in radians, the same shape as ``locked``, as
+    :meth:`LockTally.add` reads them; ``rates`` as in :meth:`LockTally.warn`.
     """
-    count = int(np.count_nonzero(locked))
-    if not count:
-        return
-    at_lock = middle[locked]
-    extremes = (float(at_lock.min()), float(at_lock.max()))
-    if convention.parsed.proper:
-        found = {0 if angle < math.pi / 2 else 180 for angle in extremes}
-    else:
-        found = {90 if angle > 0 else -90 for angle in extremes}
-    order = (90, -90, 0, 180)
-    poles = tuple(pole for pole in order if pole in found)
-    warning = GimbalLockWarning(convention, count, int(locked.size), poles, rates)
-    warnings.warn(warning, stacklevel=_stacklevel_outside_package())
+    tally = LockTally()
+    tally.add(locked, middle)
+    tally.warn(convention, int(locked.size), rates)
 
 
 class GimbalLockStatus(NamedTuple):

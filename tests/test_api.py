@@ -468,6 +468,14 @@ def peak_bytes(call: Callable[[], object]) -> int:
         ("change_up_axis", lambda a, R, q: change_up_axis(R), 72),
         ("is_rotation_matrix", lambda a, R, q: is_rotation_matrix(R), 1),
         ("matrix_to_euler", lambda a, R, q: matrix_to_euler(R), 24),
+        ("matrix_to_euler, extrinsic", lambda a, R, q: matrix_to_euler(R, "xyz"), 24),
+        ("matrix_to_euler, degrees", lambda a, R, q: matrix_to_euler(R, "ros", degrees=True), 24),
+        ("convert_angles, extrinsic", lambda a, R, q: convert_angles(a, "rose", "ros"), 24),
+        (
+            "quaternion_to_euler, extrinsic",
+            lambda a, R, q: eulerlib.quaternion_to_euler(q, "xyz", degrees=True),
+            24,
+        ),
         ("euler_to_matrix", lambda a, R, q: euler_to_matrix(a), 72),
         ("gimbal_lock_status", lambda a, R, q: gimbal_lock_status(R), 9),
         ("matrix_to_quaternion", lambda a, R, q: eulerlib.matrix_to_quaternion(R), 32),
@@ -507,3 +515,22 @@ def test_no_temporary_as_large_as_the_input(
     peak = peak_bytes(lambda: call(angles, R, q))
     # the output, plus the temporaries of one block (16384 rotations): a few MB at most
     assert peak <= n * output_bytes + 6_000_000, f"{name}: peak {peak / 1e6:.1f} MB"
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda a, omega: eulerlib.angular_velocity_to_euler_rates(a, omega),
+        lambda a, omega: eulerlib.angular_velocity_to_euler_rates(a, omega, "xyz", degrees=True),
+    ],
+)
+def test_euler_rates_keep_nothing_per_rotation_beyond_the_output(
+    call: Any, large_inputs: tuple[np.ndarray, ...]
+) -> None:
+    """Twice the rotations cost the output's 24 bytes per rotation more, and nothing else:
+    the gimbal-lock warning is worded from a few numbers per block, not a mask of the batch."""
+    angles, _, q = large_inputs
+    half = len(angles) // 2
+    smaller = peak_bytes(lambda: call(angles[:half], q[:half, :3]))
+    larger = peak_bytes(lambda: call(angles, q[:, :3]))
+    assert larger - smaller <= (len(angles) - half) * 24 + 1_000_000, larger - smaller
