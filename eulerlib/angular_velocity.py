@@ -240,7 +240,7 @@ def angular_velocity_to_euler_rates(
     shape = broadcast_shape({"angles": leads[0], "omega": leads[1]})
     flat_angles, flat_omega = values.reshape(-1, 3), velocities.reshape(-1, 3)
     parsed = convention.parsed
-    zero_first = (convention.lock_zeroes == "first") == parsed.intrinsic
+    zero_first = convention.zeroes_intrinsic_first
     count = math.prod(shape)
     out, middle = np.empty((count, 3)), np.empty(count)
     locked = np.empty(count, dtype=bool)
@@ -256,18 +256,13 @@ def angular_velocity_to_euler_rates(
 # --- the kernels, on one block of checked values ---------------------------------------------
 
 
-def _intrinsic_order(values: Array, parsed: Sequence) -> Array:
-    """Columns in the order of the intrinsic form (an extrinsic sequence reads them reversed)."""
-    return values if parsed.intrinsic else values[:, ::-1]
-
-
 def rates_to_omega(
     angles: Array, rates: Array, parsed: Sequence, space: bool, degrees: bool
 ) -> Array:
     """``ω = J θ̇`` for a block: ``angles`` and ``rates`` of shape ``(n, 3)``, in ``seq`` order."""
     index, sign = relabelling(parsed)
-    s, c = sin_cos(_intrinsic_order(angles, parsed), degrees)
-    da, db, dc = _intrinsic_order(rates, parsed).T
+    s, c = sin_cos(parsed.intrinsic_order(angles), degrees)
+    da, db, dc = parsed.intrinsic_order(rates).T
     sa, sb, sc = s.T
     ca, cb, cc = c.T
     if parsed.proper:  # M = R_x(a) R_y(b) R_x(c)
@@ -305,7 +300,7 @@ def omega_to_rates(
     :func:`eulerlib.gimbal_lock.warn_if_locked` reads them (0 for the others, which it ignores).
     """
     index, sign = relabelling(parsed)
-    s, c = sin_cos(_intrinsic_order(angles, parsed), degrees)
+    s, c = sin_cos(parsed.intrinsic_order(angles), degrees)
     sa, sb, sc = s.T
     ca, cb, cc = c.T
     w1, w2, w3 = (omega[:, index[r]] if sign[r] > 0 else -omega[:, index[r]] for r in range(3))
@@ -356,4 +351,4 @@ def omega_to_rates(
             dc = np.where(locked, 0.0, dc)
     rates = np.stack([da, db, dc], axis=-1)
     rates += 0.0  # turns every -0.0 into 0.0
-    return _intrinsic_order(rates, parsed), locked, middle
+    return parsed.intrinsic_order(rates), locked, middle

@@ -41,7 +41,12 @@ intrinsic form** is set to 0, which is the first angle of an intrinsic sequence 
 angle of an extrinsic one. So ``"ZYX"`` and ``"xyz"`` (the same rotations with the angles
 reversed) give identical numbers at lock too, and for ``"ZYX"`` the rule is Rose's (yaw = 0).
 Baker's preset keeps Baker's own choice (bank = 0). This module is the only place that rule is
-written down; :mod:`eulerlib.gimbal_lock` words it.
+written down, and what follows from it is read from the :class:`Convention` by every path
+(matrices, quaternions, rates, conversion, plots, the command line): the position of the angle
+set to 0 (:attr:`Convention.zeroed_index`), the same policy in the intrinsic order the kernels
+work in (:attr:`Convention.zeroes_intrinsic_first`), the reversal of the angles of a fixed-axis
+sequence (:meth:`Convention.to_intrinsic`, :meth:`Convention.from_intrinsic`), the poles and the
+label. :mod:`eulerlib.gimbal_lock` words it.
 
 Examples
 --------
@@ -55,7 +60,10 @@ Examples
 
 from __future__ import annotations
 
-from typing import Literal, NamedTuple
+import math
+from typing import Any, Literal, NamedTuple, TypeVar, overload
+
+from numpy.typing import NDArray
 
 from eulerlib.sequences import ALL_SEQUENCES, Sequence, parse_sequence, sequence_problem
 
@@ -66,6 +74,8 @@ __all__ = [
     "LockedAngle",
     "get_convention",
 ]
+
+_Item = TypeVar("_Item")
 
 #: Which angle, in argument order, is set to 0 at gimbal lock.
 LockedAngle = Literal["first", "third"]
@@ -97,8 +107,12 @@ class Convention(NamedTuple):
     >>> rose = CONVENTIONS["rose"]
     >>> rose.seq, rose.angle_names, rose.up_axis, rose.lock_zeroes
     ('ZYX', ('yaw', 'pitch', 'roll'), 'z', 'first')
-    >>> rose.zeroed_name, rose.carrier_name
-    ('yaw', 'roll')
+    >>> rose.zeroed_name, rose.carrier_name, rose.zeroed_index
+    ('yaw', 'roll', 0)
+    >>> rose.label, rose.poles
+    ('rose (ZYX)', (90, -90))
+    >>> CONVENTIONS["ros"].to_intrinsic(CONVENTIONS["ros"].angle_names)
+    ('yaw', 'pitch', 'roll')
     """
 
     name: str
@@ -114,14 +128,82 @@ class Convention(NamedTuple):
         return parse_sequence(self.seq)
 
     @property
+    def zeroed_index(self) -> int:
+        """Position, in argument order, of the angle set to 0 at gimbal lock: 0 or 2."""
+        return 0 if self.lock_zeroes == "first" else 2
+
+    @property
+    def carrier_index(self) -> int:
+        """Position, in argument order, of the angle that carries the whole turn at lock."""
+        return 2 - self.zeroed_index
+
+    @property
     def zeroed_name(self) -> str:
         """Name of the angle set to 0 at gimbal lock."""
-        return self.angle_names[0 if self.lock_zeroes == "first" else 2]
+        return self.angle_names[self.zeroed_index]
 
     @property
     def carrier_name(self) -> str:
         """Name of the angle that carries the whole turn at gimbal lock."""
-        return self.angle_names[2 if self.lock_zeroes == "first" else 0]
+        return self.angle_names[self.carrier_index]
+
+    @property
+    def zeroes_intrinsic_first(self) -> bool:
+        """Whether the angle set to 0 at lock is the first angle of the intrinsic form.
+
+        The kernels work in intrinsic order; this is the policy in their terms. For a bare
+        sequence it is always True (eulerlib's rule); Baker's preset makes it False.
+        """
+        return (self.lock_zeroes == "first") == self.parsed.intrinsic
+
+    @overload
+    def to_intrinsic(self, values: NDArray[Any]) -> NDArray[Any]: ...
+    @overload
+    def to_intrinsic(self, values: tuple[_Item, _Item, _Item]) -> tuple[_Item, _Item, _Item]: ...
+    def to_intrinsic(self, values: Any) -> Any:
+        """Angles in argument order (the last axis of an array, or a tuple) in intrinsic order.
+
+        Reversed for an extrinsic sequence, unchanged for an intrinsic one
+        (:meth:`eulerlib.sequences.Sequence.intrinsic_order`).
+        """
+        return self.parsed.intrinsic_order(values)
+
+    @overload
+    def from_intrinsic(self, values: NDArray[Any]) -> NDArray[Any]: ...
+    @overload
+    def from_intrinsic(self, values: tuple[_Item, _Item, _Item]) -> tuple[_Item, _Item, _Item]: ...
+    def from_intrinsic(self, values: Any) -> Any:
+        """Angles in intrinsic order back in argument order; the inverse of :meth:`to_intrinsic`."""
+        return self.parsed.intrinsic_order(values)
+
+    @property
+    def label(self) -> str:
+        """``"ZYX"`` for a bare sequence, ``"rose (ZYX)"`` for a named convention."""
+        if self.name == self.seq:
+            return self.seq
+        return f"{self.name} ({self.seq})"
+
+    @property
+    def quoted_label(self) -> str:
+        """The label for prose: ``"'ZYX'"``, or ``"'rose' (seq 'ZYX')"`` for a named convention."""
+        if self.name == self.seq:
+            return repr(self.seq)
+        return f"{self.name!r} (seq {self.seq!r})"
+
+    @property
+    def poles(self) -> tuple[int, int]:
+        """The singular middle angles, in degrees: (90, -90) for Tait–Bryan, (0, 180) for proper."""
+        return (0, 180) if self.parsed.proper else (90, -90)
+
+    def pole(self, middle: float) -> int:
+        """The singular middle angle (degrees) nearest to a middle angle given in radians.
+
+        ``middle`` lies in [-π/2, π/2] (Tait–Bryan) or [0, π] (proper Euler), as the
+        conversions return it.
+        """
+        if self.parsed.proper:
+            return 0 if middle < math.pi / 2 else 180
+        return 90 if middle > 0 else -90
 
 
 def default_lock_zeroes(parsed: Sequence) -> LockedAngle:

@@ -241,11 +241,6 @@ def _lock_words(facts: Any) -> str:
     )
 
 
-def _label(convention: Any) -> str:
-    name, seq = convention.name, convention.seq
-    return name if name == seq else f"{name} ({seq})"
-
-
 def _list_conventions() -> str:
     from eulerlib.conventions import CONVENTIONS, PRESET_ALIASES
     from eulerlib.sequences import ALL_SEQUENCES
@@ -349,8 +344,7 @@ def run(args: argparse.Namespace) -> int:
             "angles": angles,
         }
         lines.append(
-            f"from {_label(source)}: "
-            f"{_angle_list(source.angle_names, angles, unit, args.precision)}"
+            f"from {source.label}: {_angle_list(source.angle_names, angles, unit, args.precision)}"
         )
 
     report["matrix"] = R.tolist()
@@ -379,7 +373,7 @@ def run(args: argparse.Namespace) -> int:
             }
         )
         lines.append(
-            f"to {_label(target)}: {_angle_list(target.angle_names, shown, unit, args.precision)}"
+            f"to {target.label}: {_angle_list(target.angle_names, shown, unit, args.precision)}"
         )
         if note:
             lines.append(f"  {note}")

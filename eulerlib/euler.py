@@ -130,9 +130,7 @@ def angles_to_matrices(
 ) -> NDArray[np.float64]:
     """Body of :func:`euler_to_matrix` for checked angles of shape ``(..., 3)``."""
     parsed = convention.parsed
-    flat = values.reshape(-1, 3)
-    if not parsed.intrinsic:
-        flat = flat[:, ::-1]
+    flat = convention.to_intrinsic(values.reshape(-1, 3))
     R = np.empty((flat.shape[0], 3, 3))
     for block in block_slices(flat.shape[0]):
         fill_matrices(R[block], flat[block], parsed, degrees)
@@ -252,15 +250,13 @@ def entry_blocks_to_angles(
     parsed = convention.parsed
     count = math.prod(lead)
     angles, locked = np.empty((count, 3)), np.empty(count, dtype=bool)
-    zero_first = (convention.lock_zeroes == "first") == parsed.intrinsic
+    zero_first = convention.zeroes_intrinsic_first
     for block, entries in blocks:
         angles[block], locked[block] = intrinsic_angles(
             entries, parsed, zero_first, GIMBAL_LOCK_TOLERANCE
         )
     if warn:
         warn_if_locked(convention, locked, angles[:, 1])
-    if not parsed.intrinsic:
-        angles = angles[:, ::-1]
     if degrees:
-        angles = np.degrees(angles, out=angles if parsed.intrinsic else None)
-    return np.ascontiguousarray(angles).reshape(*lead, 3)
+        np.degrees(angles, out=angles)
+    return np.ascontiguousarray(convention.from_intrinsic(angles)).reshape(*lead, 3)

@@ -163,7 +163,7 @@ class GimbalLockWarning(UserWarning):
         self.count = count
         self.total = total
         self.zeroed = convention.zeroed_name
-        self.zeroed_position = 0 if convention.lock_zeroes == "first" else 2
+        self.zeroed_position = convention.zeroed_index
         self.carrier = convention.carrier_name
         self.poles = poles
         self.combinations = {pole: lock_combination(convention, pole)[1] for pole in poles}
@@ -172,11 +172,7 @@ class GimbalLockWarning(UserWarning):
 
     def _words(self) -> str:
         chosen = self.convention
-        label = (
-            repr(chosen.name)
-            if chosen.name == chosen.seq
-            else (f"{chosen.name!r} (seq {chosen.seq!r})")
-        )
+        label = chosen.quoted_label
         first, middle, third = chosen.angle_names
         defined = "; ".join(
             f"{combination} at {pole}°" if len(self.combinations) > 1 else combination
@@ -233,12 +229,8 @@ def warn_if_locked(
         return
     at_lock = middle[locked]
     extremes = (float(at_lock.min()), float(at_lock.max()))
-    if convention.parsed.proper:
-        found = {0 if angle < math.pi / 2 else 180 for angle in extremes}
-    else:
-        found = {90 if angle > 0 else -90 for angle in extremes}
-    order = (90, -90, 0, 180)
-    poles = tuple(pole for pole in order if pole in found)
+    found = {convention.pole(angle) for angle in extremes}
+    poles = tuple(pole for pole in convention.poles if pole in found)
     warning = GimbalLockWarning(convention, count, int(locked.size), poles, rates)
     warnings.warn(warning, stacklevel=_stacklevel_outside_package())
 

@@ -297,9 +297,7 @@ def euler_to_quaternion(
     first = check_flag(scalar_first, "scalar_first")
     values = as_vectors(angles, "angles")
     parsed = convention.parsed
-    flat = values.reshape(-1, 3)
-    if not parsed.intrinsic:
-        flat = flat[:, ::-1]
+    flat = convention.to_intrinsic(values.reshape(-1, 3))
     out = np.empty((flat.shape[0], 4))
     for block in block_slices(flat.shape[0]):
         out[block] = stored(euler_to_quaternions(flat[block], parsed, in_degrees), first)

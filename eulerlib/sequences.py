@@ -21,9 +21,12 @@ convention give identical numbers.
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import Any, NamedTuple, TypeVar, overload
 
 import numpy as np
+from numpy.typing import NDArray
+
+_Item = TypeVar("_Item")
 
 TAIT_BRYAN = ("XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX")
 PROPER_EULER = ("XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ")
@@ -105,6 +108,31 @@ class Sequence(NamedTuple):
     def intrinsic_axes(self) -> tuple[int, int, int]:
         """Axes of the equivalent intrinsic sequence (reversed when the sequence is extrinsic)."""
         return self.axes if self.intrinsic else self.axes[::-1]
+
+    @overload
+    def intrinsic_order(self, values: NDArray[Any]) -> NDArray[Any]: ...
+    @overload
+    def intrinsic_order(self, values: tuple[_Item, _Item, _Item]) -> tuple[_Item, _Item, _Item]: ...
+    def intrinsic_order(self, values: Any) -> Any:
+        """Three values (the last axis of an array, or a tuple) between written and intrinsic order.
+
+        The written order of an extrinsic sequence is the reverse of its intrinsic form, so the
+        values are reversed for it and returned unchanged for an intrinsic sequence. Reversing
+        twice is the identity: the same call maps intrinsic order back to written order. This is
+        the one place eulerlib writes that rule down.
+
+        Examples
+        --------
+        >>> parse_sequence("xyz").intrinsic_order(("roll", "pitch", "yaw"))
+        ('yaw', 'pitch', 'roll')
+        >>> parse_sequence("ZYX").intrinsic_order(np.array([[1.0, 2.0, 3.0]]))
+        array([[1., 2., 3.]])
+        """
+        if self.intrinsic:
+            return values
+        if isinstance(values, tuple):
+            return values[::-1]
+        return values[..., ::-1]
 
 
 def sequence_problem(seq: str) -> str:

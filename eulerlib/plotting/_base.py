@@ -49,8 +49,7 @@ def intrinsic_steps(
     values: NDArray[np.float64], convention: Convention
 ) -> tuple[tuple[int, int, int], NDArray[np.float64]]:
     """Axes and angles (radians) of the intrinsic form of a convention, for one set of angles."""
-    parsed = convention.parsed
-    return parsed.intrinsic_axes, values if parsed.intrinsic else values[::-1]
+    return convention.parsed.intrinsic_axes, convention.to_intrinsic(values)
 
 
 def partial_products(
@@ -96,10 +95,3 @@ def add_3d_axes(
 def degrees_text(values: NDArray[np.float64]) -> str:
     """Angles given in radians, written in degrees: ``"30°, 20°, 10°"``."""
     return ", ".join(f"{v:.4g}°" for v in np.degrees(values) + 0.0)
-
-
-def convention_label(convention: Convention) -> str:
-    """``"ZYX"`` for a bare sequence, ``"rose (ZYX)"`` for a named convention."""
-    if convention.name == convention.seq:
-        return convention.seq
-    return f"{convention.name} ({convention.seq})"

@@ -28,7 +28,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from eulerlib.conventions import CONVENTIONS, Convention, get_convention
 from eulerlib.gimbal_lock import GimbalLockWarning
-from eulerlib.plotting._base import add_3d_axes, convention_label, style_axes
+from eulerlib.plotting._base import add_3d_axes, style_axes
 from eulerlib.plotting._checks import angle_triple
 from eulerlib.plotting.frames import frame_artists
 from eulerlib.sequences import ALL_SEQUENCES
@@ -191,7 +191,7 @@ def _state_text(
         np.round(matrix, 4) + 0.0, separator=" ", formatter={"float_kind": lambda v: f"{v: .4f}"}
     )
     lines = [
-        f"{convention_label(convention)}: {listing(values)}",
+        f"{convention.label}: {listing(values)}",
         f"R =\n{matrix_text}",
         f"recovered: {listing(recovered)}",
         f"distance to gimbal lock: {_degrees(distance)}" + (" (LOCKED)" if lock else ""),
@@ -215,7 +215,7 @@ def _draw_state(ax: Any, state: ExplorerState) -> None:
     """The reference frame (dashed) and the rotated frame of a state, on a cleared 3D axes."""
     ax.cla()
     values = ", ".join(_degrees(angle) for angle in state.angles)
-    style_axes(ax, 1.2, f"{convention_label(state.convention)} ({values})")
+    style_axes(ax, 1.2, f"{state.convention.label} ({values})")
     frame_artists(ax, np.eye(3), linestyle="--", alpha=0.45, linewidth=1.5)
     frame_artists(ax, state.matrix, label_suffix="'")
 
@@ -224,9 +224,9 @@ def _selector_options(convention: Convention) -> list[tuple[str, Convention]]:
     """The presets, then the 24 sequences; a convention made by the caller comes first."""
     presets = [CONVENTIONS[name] for name in ("rose", "baker", "ros")]
     sequences = [get_convention(seq) for seq in ALL_SEQUENCES]
-    options = [(convention_label(choice), choice) for choice in presets + sequences]
+    options = [(choice.label, choice) for choice in presets + sequences]
     if convention not in presets + sequences:
-        options.insert(0, (convention_label(convention), convention))
+        options.insert(0, (convention.label, convention))
     return options
 
 
@@ -354,7 +354,7 @@ class Explorer:
 
     def __repr__(self) -> str:
         values = ", ".join(_degrees(angle) for angle in self.angles)
-        return f"<Explorer {convention_label(self.convention)}: {values}>"
+        return f"<Explorer {self.convention.label}: {values}>"
 
 
 def explorer(seq: str | Convention = "ZYX") -> Explorer:

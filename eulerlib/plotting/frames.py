@@ -22,7 +22,6 @@ from eulerlib.plotting._base import (
     HIGHLIGHT_COLOR,
     PRIME,
     add_3d_axes,
-    convention_label,
     degrees_text,
     intrinsic_steps,
     partial_products,
@@ -482,7 +481,7 @@ def plot_sequence_steps(
                 multialignment="center",
             )
         fig.suptitle(
-            f"{convention_label(convention)} with angles ({degrees_text(values)}): "
+            f"{convention.label} with angles ({degrees_text(values)}): "
             "the same rotation, read two ways",
             fontsize=12,
         )
