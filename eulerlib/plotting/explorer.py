@@ -3,9 +3,10 @@
 :func:`explorer_state` is the explorer's logic as a plain function, testable without a browser:
 the matrix of three angles in a convention, the angles :func:`eulerlib.matrix_to_euler` gives
 back with that convention's own lock policy, and the distance to gimbal lock. At lock the
-words come from the :class:`eulerlib.GimbalLockWarning` the conversion emits (which angle was
-set to 0, which one carries the turn, which combination is still defined), so the explorer
-says exactly what the library did.
+words come from a :class:`eulerlib.GimbalLockWarning` built from :func:`eulerlib.gimbal_lock_status`
+and the :class:`eulerlib.Convention` (which angle was set to 0, which one carries the turn,
+which combination is still defined), the facts the conversion's own warning carries, so the
+explorer says exactly what the library did.
 
 :func:`explorer` wires the logic to ipywidgets and returns an :class:`Explorer`. With a live
 kernel, JupyterLab shows its widgets. A stored notebook opened without a kernel, or rendered as
@@ -20,7 +21,6 @@ from __future__ import annotations
 import base64
 import html
 import io
-import warnings
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
@@ -71,8 +71,8 @@ class ExplorerState(NamedTuple):
         Distance of the middle angle from gimbal lock, degrees
         (:func:`eulerlib.gimbal_lock_status`).
     lock : GimbalLockWarning or None
-        At lock, the warning the conversion emitted, with its facts (``zeroed``, ``carrier``,
-        ``combinations``); None otherwise.
+        At lock, the warning the conversion would emit, with its facts (``zeroed``,
+        ``carrier``, ``combinations``); None otherwise.
     text : str
         All of it in words, as the explorer prints it.
 
@@ -152,16 +152,14 @@ def _state(values: NDArray[np.float64], convention: Convention) -> ExplorerState
     from eulerlib.gimbal_lock import gimbal_lock_status
 
     matrix = euler_to_matrix(values, convention, degrees=True)
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", GimbalLockWarning)
-        recovered = matrix_to_euler(matrix, convention, degrees=True)
+    # no warning is caught (that would swap process-wide state); the facts are read once
+    recovered = matrix_to_euler(matrix, convention, degrees=True, warn=False)
+    status = gimbal_lock_status(matrix, convention, degrees=True)
     lock = None
-    for record in caught:
-        if isinstance(record.message, GimbalLockWarning):
-            lock = record.message
-        else:  # not ours to swallow
-            warnings.warn_explicit(record.message, record.category, record.filename, record.lineno)
-    distance = float(gimbal_lock_status(matrix, convention, degrees=True).distance)
+    if status.locked:
+        pole = convention.pole(np.radians(recovered[1]))
+        lock = GimbalLockWarning(convention, 1, 1, (pole,))
+    distance = float(status.distance)
     text = _state_text(convention, values, matrix, recovered, distance, lock)
     return ExplorerState(
         convention, values, matrix, recovered, lock is not None, distance, lock, text
