@@ -55,12 +55,13 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._blocks import block_slices
+from eulerlib._length_kernels import out_of_range
 from eulerlib._quaternion_kernels import (
     entries_to_quaternions,
     euler_to_quaternions,
     quaternions_to_entries,
 )
-from eulerlib._unit import out_of_range, scaled_to_unit_size
+from eulerlib._unit import scaled_to_unit_size
 from eulerlib._validation import (
     ROTATION_ATOL,
     as_float_array,
