@@ -63,10 +63,10 @@ from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._broadcast import broadcast_blocks, broadcast_shape
 from eulerlib._euler_kernels import frame as relabelling
+from eulerlib._lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
 from eulerlib._trig import sin_cos
 from eulerlib._validation import as_vectors, check_choice, check_flag
 from eulerlib.conventions import Convention, get_convention
-from eulerlib.gimbal_lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
 from eulerlib.sequences import Sequence
 
 __all__ = ["FRAMES", "angular_velocity_to_euler_rates", "euler_rates_to_angular_velocity"]
@@ -148,7 +148,7 @@ def euler_rates_to_angular_velocity(
     parsed = convention.parsed
     out = np.empty((math.prod(shape), 3))
     for block, (on_angles, on_rates) in broadcast_blocks(shape, leads):
-        out[block] = rates_to_omega(
+        out[block] = _rates_to_omega(
             flat_angles[on_angles], flat_rates[on_rates], parsed, in_space, in_degrees
         )
     return out.reshape(*shape, 3)
@@ -245,7 +245,7 @@ def angular_velocity_to_euler_rates(
     out, middle = np.empty((count, 3)), np.empty(count)
     locked = np.empty(count, dtype=bool)
     for block, (on_angles, on_omega) in broadcast_blocks(shape, leads):
-        out[block], locked[block], middle[block] = omega_to_rates(
+        out[block], locked[block], middle[block] = _omega_to_rates(
             flat_angles[on_angles], flat_omega[on_omega], parsed, in_space, in_degrees, zero_first
         )
     if warn_lock:
@@ -256,7 +256,7 @@ def angular_velocity_to_euler_rates(
 # --- the kernels, on one block of checked values ---------------------------------------------
 
 
-def rates_to_omega(
+def _rates_to_omega(
     angles: Array, rates: Array, parsed: Sequence, space: bool, degrees: bool
 ) -> Array:
     """``ω = J θ̇`` for a block: ``angles`` and ``rates`` of shape ``(n, 3)``, in ``seq`` order."""
@@ -284,7 +284,7 @@ def rates_to_omega(
     return out
 
 
-def omega_to_rates(
+def _omega_to_rates(
     angles: Array,
     omega: Array,
     parsed: Sequence,

@@ -19,9 +19,9 @@ from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._blocks import block_slices
 from eulerlib._euler_kernels import fill_matrices, intrinsic_angles, relabel_into
+from eulerlib._lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
 from eulerlib._validation import as_vectors, check_flag, matrix_entries
 from eulerlib.conventions import Convention, get_convention
-from eulerlib.gimbal_lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
 from eulerlib.up_axis import up_axis_matrix
 
 __all__ = ["convert_angles"]
