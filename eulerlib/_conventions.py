@@ -17,6 +17,8 @@ from eulerlib._sequences import ALL_SEQUENCES, Sequence, parse_sequence, sequenc
 
 _Item = TypeVar("_Item")
 
+_PARSED = {seq: parse_sequence(seq) for seq in ALL_SEQUENCES}
+
 #: Which angle, in argument order, is set to 0 at gimbal lock.
 LockedAngle = Literal["first", "third"]
 
@@ -64,8 +66,9 @@ class Convention(NamedTuple):
 
     @property
     def parsed(self) -> Sequence:
-        """The axis sequence, parsed."""
-        return parse_sequence(self.seq)
+        """The axis sequence, parsed (looked up: the 24 are parsed once, on import)."""
+        found = _PARSED.get(self.seq)
+        return parse_sequence(self.seq) if found is None else found
 
     @property
     def zeroed_index(self) -> int:
