@@ -63,10 +63,10 @@ from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._broadcast import broadcast_blocks, broadcast_shape
 from eulerlib._euler_kernels import frame as relabelling
+from eulerlib._lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
 from eulerlib._trig import sin_cos
 from eulerlib._validation import as_vectors, check_choice, check_flag
 from eulerlib.conventions import Convention, get_convention
-from eulerlib.gimbal_lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
 from eulerlib.sequences import Sequence
 
 __all__ = ["FRAMES", "angular_velocity_to_euler_rates", "euler_rates_to_angular_velocity"]
@@ -148,7 +148,7 @@ def euler_rates_to_angular_velocity(
     parsed = convention.parsed
     out = np.empty((math.prod(shape), 3))
     for block, (on_angles, on_rates) in broadcast_blocks(shape, leads):
-        out[block] = rates_to_omega(
+        out[block] = _rates_to_omega(
             flat_angles[on_angles], flat_rates[on_rates], parsed, in_space, in_degrees
         )
     return out.reshape(*shape, 3)
@@ -240,12 +240,12 @@ def angular_velocity_to_euler_rates(
     shape = broadcast_shape({"angles": leads[0], "omega": leads[1]})
     flat_angles, flat_omega = values.reshape(-1, 3), velocities.reshape(-1, 3)
     parsed = convention.parsed
-    zero_first = (convention.lock_zeroes == "first") == parsed.intrinsic
+    zero_first = convention.zeroes_intrinsic_first
     count = math.prod(shape)
     out, middle = np.empty((count, 3)), np.empty(count)
     locked = np.empty(count, dtype=bool)
     for block, (on_angles, on_omega) in broadcast_blocks(shape, leads):
-        out[block], locked[block], middle[block] = omega_to_rates(
+        out[block], locked[block], middle[block] = _omega_to_rates(
             flat_angles[on_angles], flat_omega[on_omega], parsed, in_space, in_degrees, zero_first
         )
     if warn_lock:
@@ -256,18 +256,13 @@ def angular_velocity_to_euler_rates(
 # --- the kernels, on one block of checked values ---------------------------------------------
 
 
-def _intrinsic_order(values: Array, parsed: Sequence) -> Array:
-    """Columns in the order of the intrinsic form (an extrinsic sequence reads them reversed)."""
-    return values if parsed.intrinsic else values[:, ::-1]
-
-
-def rates_to_omega(
+def _rates_to_omega(
     angles: Array, rates: Array, parsed: Sequence, space: bool, degrees: bool
 ) -> Array:
     """``ω = J θ̇`` for a block: ``angles`` and ``rates`` of shape ``(n, 3)``, in ``seq`` order."""
     index, sign = relabelling(parsed)
-    s, c = sin_cos(_intrinsic_order(angles, parsed), degrees)
-    da, db, dc = _intrinsic_order(rates, parsed).T
+    s, c = sin_cos(parsed.intrinsic_order(angles), degrees)
+    da, db, dc = parsed.intrinsic_order(rates).T
     sa, sb, sc = s.T
     ca, cb, cc = c.T
     if parsed.proper:  # M = R_x(a) R_y(b) R_x(c)
@@ -289,7 +284,7 @@ def rates_to_omega(
     return out
 
 
-def omega_to_rates(
+def _omega_to_rates(
     angles: Array,
     omega: Array,
     parsed: Sequence,
@@ -305,7 +300,7 @@ def omega_to_rates(
     :func:`eulerlib.gimbal_lock.warn_if_locked` reads them (0 for the others, which it ignores).
     """
     index, sign = relabelling(parsed)
-    s, c = sin_cos(_intrinsic_order(angles, parsed), degrees)
+    s, c = sin_cos(parsed.intrinsic_order(angles), degrees)
     sa, sb, sc = s.T
     ca, cb, cc = c.T
     w1, w2, w3 = (omega[:, index[r]] if sign[r] > 0 else -omega[:, index[r]] for r in range(3))
@@ -356,4 +351,4 @@ def omega_to_rates(
             dc = np.where(locked, 0.0, dc)
     rates = np.stack([da, db, dc], axis=-1)
     rates += 0.0  # turns every -0.0 into 0.0
-    return _intrinsic_order(rates, parsed), locked, middle
+    return parsed.intrinsic_order(rates), locked, middle

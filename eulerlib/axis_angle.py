@@ -56,10 +56,11 @@ from eulerlib._quaternion_kernels import (
     relative_angles,
     rotation_angles,
     rotation_vectors,
+    rotvecs_to_entries,
     unit_axes,
 )
 from eulerlib._trig import half_angle_pair
-from eulerlib._unit import TINY, lengths, scaled_to_unit_size
+from eulerlib._unit import scaled_to_unit_size
 from eulerlib._validation import (
     ROTATION_ATOL,
     as_float_array,
@@ -284,24 +285,6 @@ def rotvec_to_matrix(v: ArrayLike, *, degrees: bool = False) -> NDArray[np.float
     for block in block_slices(flat.shape[0]):
         out[block] = rotvecs_to_entries(np.ascontiguousarray(flat[block].T), in_degrees).T
     return out.reshape(*vectors.shape[:-1], 3, 3)
-
-
-def rotvecs_to_entries(rows: NDArray[np.float64], degrees: bool) -> NDArray[np.float64]:
-    """Body of :func:`rotvec_to_matrix` for one block of checked rotation vectors.
-
-    ``rows`` holds the vectors as columns, shape ``(3, n)``; returns the entries of their
-    matrices laid out as :func:`eulerlib._validation.matrix_entries` does, shape ``(9, n)``.
-    """
-    length = lengths(rows)
-    a, b = half_angle_pair(length, degrees)
-    # (a, b v / |v|) is a multiple of (cos(θ/2), sin(θ/2) v / |v|); the zero vector gives
-    # b / TINY = 0 and so the identity
-    q = np.empty((4, rows.shape[1]))
-    q[0] = a
-    np.multiply(rows, b / np.maximum(length, TINY), out=q[1:])
-    entries = np.empty((9, q.shape[1]))
-    quaternions_to_entries(q, entries)
-    return entries
 
 
 def matrix_to_rotvec(

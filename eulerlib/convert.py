@@ -18,11 +18,11 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._blocks import block_slices
-from eulerlib._euler_kernels import fill_matrices, intrinsic_angles
+from eulerlib._euler_kernels import fill_matrices, intrinsic_angles, relabel_into
+from eulerlib._lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
 from eulerlib._validation import as_vectors, check_flag, matrix_entries
 from eulerlib.conventions import Convention, get_convention
-from eulerlib.gimbal_lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
-from eulerlib.up_axis import relabel_into, up_axis_matrix
+from eulerlib.up_axis import up_axis_matrix
 
 __all__ = ["convert_angles"]
 
@@ -99,12 +99,10 @@ def convert_angles(
 
     parsed_in, parsed_out = source.parsed, target.parsed
     lead = values.shape[:-1]
-    flat = values.reshape(-1, 3)
-    if not parsed_in.intrinsic:
-        flat = flat[:, ::-1]
+    flat = source.to_intrinsic(values.reshape(-1, 3))
     count = math.prod(lead)
     result, locked = np.empty((count, 3)), np.empty(count, dtype=bool)
-    zero_first = (target.lock_zeroes == "first") == parsed_out.intrinsic
+    zero_first = target.zeroes_intrinsic_first
     for block in block_slices(count):
         matrices = np.empty((block.stop - block.start, 3, 3))
         fill_matrices(matrices, flat[block], parsed_in, in_degrees)
@@ -115,8 +113,6 @@ def convert_angles(
         )
     if warn_lock:
         warn_if_locked(target, locked, result[:, 1])
-    if not parsed_out.intrinsic:
-        result = np.ascontiguousarray(result[:, ::-1])
     if in_degrees:
         np.degrees(result, out=result)
-    return result.reshape(*lead, 3)
+    return np.ascontiguousarray(target.from_intrinsic(result)).reshape(*lead, 3)

@@ -38,6 +38,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._broadcast import broadcast_blocks, broadcast_shape, selected_index
+from eulerlib._quaternion_kernels import rotvecs_to_entries
 from eulerlib._validation import (
     ROTATION_ATOL,
     _index_text,
@@ -49,7 +50,6 @@ from eulerlib._validation import (
     rotation_check,
 )
 from eulerlib.angular_velocity import FRAMES
-from eulerlib.axis_angle import rotvecs_to_entries
 
 __all__ = ["integrate_angular_velocity"]
 
