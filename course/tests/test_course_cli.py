@@ -8,10 +8,17 @@ None``, which makes ``import name`` fail exactly as it does where the package is
 from __future__ import annotations
 
 import json
+import re
+import shlex
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
+
+from eulerlib_course import cli
+
+REPO = Path(__file__).resolve().parents[2]
 
 #: Prints the third-party top-level packages that the statement loads.
 PROBE = """\
@@ -70,3 +77,17 @@ def test_the_figures_command_names_what_to_install(
         "a dependency of eulerlib-course: pip install -e ./course"
     ]
     assert list(out.iterdir()) == []
+
+
+def test_readme_command_lines_are_commands_the_course_cli_takes() -> None:
+    readme = (REPO / "README.md").read_text(encoding="utf-8")
+    blocks = re.findall(r"```bash\n(.*?)```", readme, flags=re.DOTALL)
+    commands = [line for block in blocks for line in block.splitlines()]
+    shown = [c.split("#")[0] for c in commands if c.startswith(".venv/bin/eulerlib-course ")]
+    assert {shlex.split(c)[1] for c in shown} == set(cli.SUBCOMMANDS)
+    parser = cli.build_parser()
+    for command in shown:
+        try:
+            parser.parse_args(shlex.split(command)[1:])
+        except SystemExit:
+            pytest.fail(f"README shows a command eulerlib-course does not take: {command.strip()}")
