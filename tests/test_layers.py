@@ -10,7 +10,7 @@ at the top or inside a function, is held against these rules:
   public module of eulerlib;
 * **public modules** (``eulerlib/*.py``: the documented functions, thin fronts that check the
   arguments and call one hop below) never import ``eulerlib.symbolic``, ``eulerlib.plotting``,
-  ``eulerlib.course`` or the command line;
+  or the command line;
 * ``eulerlib.symbolic`` and ``eulerlib.plotting`` may use the public layer; their own private
   modules (``_*.py``) never import the package's public modules;
 * the command line (``eulerlib/cli.py``, ``convert_cli.py``, ``__main__.py``) sits on top;
@@ -34,7 +34,7 @@ import pytest
 PACKAGE = Path(__file__).resolve().parent.parent / "eulerlib"
 KERNELS = {"eulerlib._trig", "eulerlib._sequences"}
 COMMAND_LINE = {"eulerlib.cli", "eulerlib.convert_cli", "eulerlib.__main__"}
-ADD_ONS = ("eulerlib.symbolic", "eulerlib.plotting", "eulerlib.course")
+ADD_ONS = ("eulerlib.symbolic", "eulerlib.plotting")
 ALLOWED_OUTSIDE = {"numpy", "__future__"} | set(sys.stdlib_module_names)
 
 
@@ -170,7 +170,7 @@ def test_a_crossing_is_named(name: str, source: str, words: str) -> None:
         ("eulerlib.euler", "from eulerlib._euler import angles_to_matrices"),
         ("eulerlib.plotting.frames", "from eulerlib.plotting._base import arrow_head"),
         ("eulerlib.plotting.frames", "from eulerlib.euler import euler_to_matrix"),
-        ("eulerlib.cli", "from eulerlib.course import commands"),
+        ("eulerlib.cli", "from eulerlib.convert_cli import configure_parser"),
     ],
 )
 def test_allowed_imports_pass(name: str, source: str) -> None:

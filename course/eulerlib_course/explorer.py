@@ -268,7 +268,8 @@ class Explorer:
             import ipywidgets as widgets
         except ImportError:  # pragma: no cover - depends on the installation
             raise ImportError(
-                "the explorer needs ipywidgets: install eulerlib with the notebooks extra"
+                "the explorer needs ipywidgets, a dependency of eulerlib-course: "
+                "pip install -e ./course"
             ) from None
         from matplotlib.figure import Figure
 
