@@ -25,8 +25,9 @@ sessions some tests run). Three costs there had nothing to do with the tests:
   before: by reference counting at once, and in cycles by the collector, which runs as often
   as before.
 
-This file is pytest configuration only; the shared fixtures and the checks around the session
-are in ``tests/conftest.py``.
+Besides, every test (of the library, of the course, doctests) finds NumPy's print options as
+they were before it: :func:`_numpy_print_options`. The other shared fixtures and the checks
+around the session are in ``tests/conftest.py``.
 """
 
 from __future__ import annotations
@@ -36,9 +37,10 @@ import importlib
 import importlib.util
 import sys
 import types
-from collections.abc import Generator
+from collections.abc import Generator, Iterator
 from typing import Any
 
+import numpy as np
 import pytest
 
 #: The package whose import is put off, and the one function jsonschema takes from it.
@@ -89,3 +91,16 @@ def pytest_collection(session: pytest.Session) -> Generator[None, object, object
         gc.enable()
         gc.collect()
         gc.freeze()
+
+
+@pytest.fixture(autouse=True)
+def _numpy_print_options() -> Iterator[None]:
+    """NumPy's print options as they were before each test.
+
+    A test that runs notebook code in this process (the course's exercise tests) runs its
+    ``np.set_printoptions``; without this, a doctest that happens to run after it on the same
+    worker would print numbers differently.
+    """
+    options = np.get_printoptions()
+    yield
+    np.set_printoptions(**options)

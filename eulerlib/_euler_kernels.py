@@ -15,8 +15,8 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import NDArray
 
+from eulerlib._sequences import Sequence
 from eulerlib._trig import sin_cos
-from eulerlib.sequences import Sequence
 
 Entry = Callable[[int, int], NDArray[np.float64]]
 
@@ -149,3 +149,14 @@ def intrinsic_angles(
     # lie in (−π, π] as documented
     angles[angles == -np.pi] = np.pi
     return angles, locked
+
+
+def relabel_into(
+    out: NDArray[np.float64], matrices: NDArray[np.float64], P: NDArray[np.float64]
+) -> None:
+    """Write ``P R Pᵀ`` for each ``R`` of ``matrices`` (n, 3, 3) into ``out``; ``P`` a signed
+    permutation."""
+    perm = np.argmax(np.abs(P), axis=1)
+    signs = P[np.arange(3), perm]
+    np.multiply(matrices[:, perm][:, :, perm], np.outer(signs, signs), out=out)
+    out += 0.0  # no negative zeros

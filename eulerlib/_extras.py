@@ -4,11 +4,10 @@ The core library needs numpy only. The other parts name their dependencies as *e
 package, installed with ``pip install "eulerlib[EXTRA]"``:
 
 * ``symbolic``: SymPy, for :mod:`eulerlib.symbolic`;
-* ``plot``: matplotlib, for :mod:`eulerlib.plotting` and ``eulerlib figures``;
-* ``notebooks``: both of the above, JupyterLab and the notebook tools (nbformat, nbclient,
-  nbconvert) that ``eulerlib notebooks`` uses;
-* ``teach``: nbgrader, for ``eulerlib notebooks nbgrader``;
-* ``site``: Jupyter Book and a MathJax to bundle, for ``eulerlib site build``.
+* ``plot``: matplotlib, for :mod:`eulerlib.plotting`.
+
+The course built on the library (its notebooks, exercise checker, figures and website) is a
+package of its own, ``eulerlib-course``, with its own dependencies.
 
 A part that cannot import what it needs raises :class:`MissingExtraError`, an ``ImportError``
 whose one-line message says which extra to install. The command line prints that line as it is.

@@ -13,9 +13,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from eulerlib._euler_kernels import frame
+from eulerlib._length_kernels import TINY, lengths
+from eulerlib._sequences import Sequence
 from eulerlib._trig import half_angle_pair
-from eulerlib._unit import TINY, lengths
-from eulerlib.sequences import Sequence
 
 Array = NDArray[np.float64]
 
@@ -272,3 +272,23 @@ def euler_to_quaternions(values: Array, parsed: Sequence, degrees: bool) -> Arra
     q *= np.sqrt(1.0 / (squared[0] * squared[1] * squared[2]))  # |q|² is the product
     make_canonical(q)
     return q
+
+
+def rotvecs_to_entries(rows: Array, degrees: bool, length: Array) -> Array:
+    """Body of :func:`rotvec_to_matrix` for one block of checked rotation vectors.
+
+    ``rows`` holds the vectors as columns, shape ``(3, n)``, and ``length`` their lengths from
+    :func:`eulerlib._length_kernels.lengths`, each a float: the caller refuses a vector longer
+    than the largest float (:func:`eulerlib._unit.refuse_overlong`), since its turn has no
+    angle. Returns the entries of their matrices laid out as
+    :func:`eulerlib._validation.matrix_entries` does, shape ``(9, n)``.
+    """
+    a, b = half_angle_pair(length, degrees)
+    # (a, b v / |v|) is a multiple of (cos(θ/2), sin(θ/2) v / |v|); the zero vector gives
+    # b / TINY = 0 and so the identity
+    q = np.empty((4, rows.shape[1]))
+    q[0] = a
+    np.multiply(rows, b / np.maximum(length, TINY), out=q[1:])
+    entries = np.empty((9, q.shape[1]))
+    quaternions_to_entries(q, entries)
+    return entries

@@ -63,6 +63,27 @@ def check_flag(value: object, name: str) -> bool:
     raise TypeError(f"{name} must be True or False, got {value!r} ({type(value).__name__})")
 
 
+def real_number(value: object, name: str) -> float:
+    """``value`` as a float, when it is a real number (a 0-d array of one counts); a number too
+    large for a float becomes infinity. What range is allowed is for the caller to decide.
+
+    Examples
+    --------
+    >>> real_number(-2, "scale"), real_number(10**400, "scale")
+    (-2.0, inf)
+    """
+    if isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf":
+        value = value[()]
+    if isinstance(value, (bool, np.bool_)) or not isinstance(
+        value, (int, float, np.integer, np.floating)
+    ):
+        raise TypeError(f"{name} must be a real number, got {value!r} ({type(value).__name__})")
+    try:
+        return float(value)
+    except OverflowError:
+        return math.inf if value > 0 else -math.inf
+
+
 def check_tolerance(value: object, name: str) -> float:
     """``value`` as a float, when it is a finite real number ≥ 0.
 
@@ -75,16 +96,7 @@ def check_tolerance(value: object, name: str) -> float:
     ...
     ValueError: atol must be a finite number ≥ 0, got nan
     """
-    if isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf":
-        value = value[()]
-    if isinstance(value, (bool, np.bool_)) or not isinstance(
-        value, (int, float, np.integer, np.floating)
-    ):
-        raise TypeError(f"{name} must be a real number, got {value!r} ({type(value).__name__})")
-    try:
-        number = float(value)
-    except OverflowError:
-        raise ValueError(f"{name} must be a finite number ≥ 0, got {value!r}") from None
+    number = real_number(value, name)
     if not (math.isfinite(number) and number >= 0.0):
         raise ValueError(f"{name} must be a finite number ≥ 0, got {value!r}")
     return number
@@ -139,10 +151,12 @@ def _first_nonfinite(array: NDArray[np.float64]) -> int | None:
     return None
 
 
-def as_float_array(value: ArrayLike, name: str) -> NDArray[np.float64]:
+def as_float_array(value: ArrayLike, name: str, finite: bool = True) -> NDArray[np.float64]:
     """``value`` as a float64 array of finite numbers, or a clear error naming ``name``.
 
-    The input is never modified; a copy is made only when the dtype changes.
+    The input is never modified; a copy is made only when the dtype changes. With
+    ``finite=False`` NaN and infinities are let through (for a predicate that answers False
+    for them instead of refusing them).
 
     Examples
     --------
@@ -190,7 +204,7 @@ def as_float_array(value: ArrayLike, name: str) -> NDArray[np.float64]:
                 f"{name} must be real numbers; got an array of objects that are not numbers"
             ) from None
     array = array.astype(np.float64, copy=False)
-    bad = _first_nonfinite(array)
+    bad = _first_nonfinite(array) if finite else None
     if bad is not None:
         raise ValueError(
             f"{name} must be finite, got {array.reshape(-1)[bad]}{_index_text(array.shape, bad)}"
@@ -224,9 +238,12 @@ def stack_angles(named: dict[str, ArrayLike]) -> NDArray[np.float64]:
         ) from None
 
 
-def as_matrix_stack(value: ArrayLike, name: str) -> NDArray[np.float64]:
-    """``value`` as a float array of shape ``(..., 3, 3)`` with finite entries (no other check)."""
-    array = as_float_array(value, name)
+def as_matrix_stack(value: ArrayLike, name: str, finite: bool = True) -> NDArray[np.float64]:
+    """``value`` as a float array of shape ``(..., 3, 3)`` with finite entries (no other check).
+
+    ``finite=False`` lets NaN and infinities through, as in :func:`as_float_array`.
+    """
+    array = as_float_array(value, name, finite)
     if array.ndim < 2 or array.shape[-2:] != (3, 3):
         raise ValueError(f"{name} must have shape (..., 3, 3), got shape {array.shape}")
     return array
@@ -245,6 +262,9 @@ class RotationCheck(NamedTuple):
     validate: bool
     repair: bool
     atol: float
+    #: What the refusal of a matrix that is not orthogonal within ``atol`` advises; a command
+    #: line names its own options here.
+    advice: str = "pass repair=True to use the nearest rotation instead"
 
 
 def rotation_check(validate: object, repair: object, atol: object) -> RotationCheck:
@@ -319,9 +339,13 @@ def shown(value: float, *, beyond: float, around: float = 0.0) -> str:
 
 
 def _raise_unless_rotations(
-    entries: NDArray[np.float64], name: str, atol: float, lead: tuple[int, ...], offset: int
+    entries: NDArray[np.float64],
+    name: str,
+    check: RotationCheck,
+    lead: tuple[int, ...],
+    offset: int,
 ) -> None:
-    """Raise ``ValueError`` unless every matrix of a block is a rotation within ``atol``.
+    """Raise ``ValueError`` unless every matrix of a block is a rotation within ``check.atol``.
 
     ``entries`` holds a block of matrices laid out by :func:`matrix_entries`, shape ``(9, n)``;
     ``offset`` is the flat index of its first matrix in the caller's array of leading shape
@@ -335,6 +359,7 @@ def _raise_unless_rotations(
             f"{name}{_index_text(lead, offset + first)} has determinant {float(det[first]):.6g}: "
             "a reflection, not a rotation"
         )
+    atol = check.atol
     error = orthonormality_error(entries)
     bad = np.flatnonzero(~(error <= atol))
     if bad.size:
@@ -342,8 +367,7 @@ def _raise_unless_rotations(
         measured = shown(float(error[first]), beyond=atol)
         raise ValueError(
             f"{name}{_index_text(lead, offset + first)} is not a rotation matrix: "
-            f"max |R Rᵀ − I| = {measured} exceeds the tolerance {atol!r}; pass "
-            "repair=True to use the nearest rotation instead"
+            f"max |R Rᵀ − I| = {measured} exceeds the tolerance {atol!r}; {check.advice}"
         )
     off = np.flatnonzero(~(np.abs(det - 1.0) <= atol))
     if off.size:  # |det − 1| can be up to 1.5 times max |R Rᵀ − I|, or more with a large atol
@@ -412,7 +436,7 @@ def rotation_entry_blocks(
             part = nearest_rotations(part, name, lead, block.start)
         entries = matrix_entries(part)
         if check.validate and not check.repair:
-            _raise_unless_rotations(entries, name, check.atol, lead, block.start)
+            _raise_unless_rotations(entries, name, check, lead, block.start)
         yield block, entries
 
 

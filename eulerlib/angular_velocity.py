@@ -63,11 +63,11 @@ from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._broadcast import broadcast_blocks, broadcast_shape
 from eulerlib._euler_kernels import frame as relabelling
+from eulerlib._lock import GIMBAL_LOCK_TOLERANCE, LockTally
 from eulerlib._overflow import overflowed, rescaled
 from eulerlib._trig import sin_cos
 from eulerlib._validation import as_vectors, check_choice, check_flag
 from eulerlib.conventions import Convention, get_convention
-from eulerlib.gimbal_lock import GIMBAL_LOCK_TOLERANCE, LockTally
 from eulerlib.sequences import Sequence
 
 __all__ = ["FRAMES", "angular_velocity_to_euler_rates", "euler_rates_to_angular_velocity"]
@@ -244,7 +244,7 @@ def angular_velocity_to_euler_rates(
     shape = broadcast_shape({"angles": leads[0], "omega": leads[1]})
     flat_angles, flat_omega = values.reshape(-1, 3), velocities.reshape(-1, 3)
     parsed = convention.parsed
-    zero_first = (convention.lock_zeroes == "first") == parsed.intrinsic
+    zero_first = convention.zeroes_intrinsic_first
     count = math.prod(shape)
     out, tally = np.empty((count, 3)), LockTally()  # the warning keeps 3 numbers, not a mask
     for block, (on_angles, on_omega) in broadcast_blocks(shape, leads):
@@ -270,15 +270,15 @@ def _omega_of_block(
     shape: tuple[int, ...],
     offset: int,
 ) -> Array:
-    """:func:`rates_to_omega`, with rates near the largest float handled as
+    """:func:`_rates_to_omega`, with rates near the largest float handled as
     :mod:`eulerlib._overflow` says; ``offset`` is the block's first flat index in ``shape``."""
     with np.errstate(over="ignore", invalid="ignore"):  # huge rates: redone below
-        omega = rates_to_omega(angles, rates, parsed, space, degrees)
+        omega = _rates_to_omega(angles, rates, parsed, space, degrees)
     bad = overflowed(omega)
     if bad.size:
         at, of = angles[bad], rates[bad]
         omega[bad] = rescaled(
-            lambda scale: rates_to_omega(at, of * scale, parsed, space, degrees),
+            lambda scale: _rates_to_omega(at, of * scale, parsed, space, degrees),
             bad, "rates", "the angular velocity", shape, offset,
         )  # fmt: skip
     return omega
@@ -294,15 +294,15 @@ def _rates_of_block(
     shape: tuple[int, ...],
     offset: int,
 ) -> tuple[Array, NDArray[np.bool_], Array]:
-    """:func:`omega_to_rates`, with ``omega`` near the largest float handled as
+    """:func:`_omega_to_rates`, with ``omega`` near the largest float handled as
     :mod:`eulerlib._overflow` says; ``offset`` is the block's first flat index in ``shape``."""
     with np.errstate(over="ignore", invalid="ignore"):  # huge omega: redone below
-        rates, locked, middle = omega_to_rates(angles, omega, parsed, space, degrees, zero_first)
+        rates, locked, middle = _omega_to_rates(angles, omega, parsed, space, degrees, zero_first)
     bad = overflowed(rates)
     if bad.size:
         at, of = angles[bad], omega[bad]
         rates[bad] = rescaled(
-            lambda scale: omega_to_rates(at, of * scale, parsed, space, degrees, zero_first)[0],
+            lambda scale: _omega_to_rates(at, of * scale, parsed, space, degrees, zero_first)[0],
             bad, "omega", "the Euler rates", shape, offset,
         )  # fmt: skip
     return rates, locked, middle
@@ -311,18 +311,13 @@ def _rates_of_block(
 # --- the kernels, on one block of checked values ---------------------------------------------
 
 
-def _intrinsic_order(values: Array, parsed: Sequence) -> Array:
-    """Columns in the order of the intrinsic form (an extrinsic sequence reads them reversed)."""
-    return values if parsed.intrinsic else values[:, ::-1]
-
-
-def rates_to_omega(
+def _rates_to_omega(
     angles: Array, rates: Array, parsed: Sequence, space: bool, degrees: bool
 ) -> Array:
     """``ω = J θ̇`` for a block: ``angles`` and ``rates`` of shape ``(n, 3)``, in ``seq`` order."""
     index, sign = relabelling(parsed)
-    s, c = sin_cos(_intrinsic_order(angles, parsed), degrees)
-    da, db, dc = _intrinsic_order(rates, parsed).T
+    s, c = sin_cos(parsed.intrinsic_order(angles), degrees)
+    da, db, dc = parsed.intrinsic_order(rates).T
     sa, sb, sc = s.T
     ca, cb, cc = c.T
     if parsed.proper:  # M = R_x(a) R_y(b) R_x(c)
@@ -344,7 +339,7 @@ def rates_to_omega(
     return out
 
 
-def omega_to_rates(
+def _omega_to_rates(
     angles: Array,
     omega: Array,
     parsed: Sequence,
@@ -357,10 +352,10 @@ def omega_to_rates(
     ``angles`` and ``omega`` have shape ``(n, 3)``, the angles in ``seq`` order. ``zero_first``:
     at lock the rate of the first angle of the intrinsic form is 0 (else the third's). The
     middle angles of the locked attitudes are returned as
-    :meth:`eulerlib.gimbal_lock.LockTally.add` reads them (0 for the others, which it ignores).
+    :meth:`eulerlib._lock.LockTally.add` reads them (0 for the others, which it ignores).
     """
     index, sign = relabelling(parsed)
-    s, c = sin_cos(_intrinsic_order(angles, parsed), degrees)
+    s, c = sin_cos(parsed.intrinsic_order(angles), degrees)
     sa, sb, sc = s.T
     ca, cb, cc = c.T
     w1, w2, w3 = (omega[:, index[r]] if sign[r] > 0 else -omega[:, index[r]] for r in range(3))
@@ -411,4 +406,4 @@ def omega_to_rates(
             dc = np.where(locked, 0.0, dc)
     rates = np.stack([da, db, dc], axis=-1)
     rates += 0.0  # turns every -0.0 into 0.0
-    return _intrinsic_order(rates, parsed), locked, middle
+    return parsed.intrinsic_order(rates), locked, middle

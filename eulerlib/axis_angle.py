@@ -49,17 +49,19 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._blocks import block_slices
-from eulerlib._broadcast import Selection, broadcast_blocks, broadcast_shape
+from eulerlib._broadcast import broadcast_blocks, broadcast_shape
+from eulerlib._length_kernels import lengths
 from eulerlib._quaternion_kernels import (
     entries_to_quaternions,
     quaternions_to_entries,
     relative_angles,
     rotation_angles,
     rotation_vectors,
+    rotvecs_to_entries,
     unit_axes,
 )
 from eulerlib._trig import half_angle_pair
-from eulerlib._unit import TINY, lengths, refuse_overlong, scaled_to_unit_size
+from eulerlib._unit import refuse_overlong, scaled_to_unit_size
 from eulerlib._validation import (
     ROTATION_ATOL,
     as_float_array,
@@ -297,35 +299,10 @@ def rotvec_to_matrix(v: ArrayLike, *, degrees: bool = False) -> NDArray[np.float
     out = np.empty((flat.shape[0], 9))
     for block in block_slices(flat.shape[0]):
         rows = np.ascontiguousarray(flat[block].T)
-        out[block] = rotvecs_to_entries(rows, in_degrees, "v", vectors.shape[:-1], block).T
+        length = lengths(rows)
+        refuse_overlong(length, "v", vectors.shape[:-1], block)
+        out[block] = rotvecs_to_entries(rows, in_degrees, length).T
     return out.reshape(*vectors.shape[:-1], 3, 3)
-
-
-def rotvecs_to_entries(
-    rows: NDArray[np.float64],
-    degrees: bool,
-    name: str,
-    lead: tuple[int, ...],
-    selection: Selection,
-) -> NDArray[np.float64]:
-    """Body of :func:`rotvec_to_matrix` for one block of checked rotation vectors.
-
-    ``rows`` holds the vectors as columns, shape ``(3, n)``; returns the entries of their
-    matrices laid out as :func:`eulerlib._validation.matrix_entries` does, shape ``(9, n)``.
-    A vector longer than the largest float is refused, naming ``name`` and its index in the
-    caller's array of leading shape ``lead``, from which ``selection`` took the block.
-    """
-    length = lengths(rows)
-    refuse_overlong(length, name, lead, selection)
-    a, b = half_angle_pair(length, degrees)
-    # (a, b v / |v|) is a multiple of (cos(θ/2), sin(θ/2) v / |v|); the zero vector gives
-    # b / TINY = 0 and so the identity
-    q = np.empty((4, rows.shape[1]))
-    q[0] = a
-    np.multiply(rows, b / np.maximum(length, TINY), out=q[1:])
-    entries = np.empty((9, q.shape[1]))
-    quaternions_to_entries(q, entries)
-    return entries
 
 
 def matrix_to_rotvec(

@@ -5,15 +5,13 @@ sub-parser and sets ``run`` as a default (``run(args) -> int``); heavy imports h
 ``run``, so ``eulerlib --help`` and ``eulerlib convert`` need numpy only:
 
 * ``eulerlib convert``: angles in one convention into a matrix and angles in another
-  (:mod:`eulerlib.convert_cli`);
-* ``eulerlib figures``: redraw every figure of the course (:mod:`eulerlib.course.commands`);
-* ``eulerlib notebooks``: make student copies of the notebooks or their nbgrader edition, or
-  re-execute and normalize them (:mod:`eulerlib.course.commands`);
-* ``eulerlib site``: build the course website from the stored notebooks
-  (:mod:`eulerlib.course.commands`).
+  (:mod:`eulerlib.convert_cli`).
 
-Bad arguments, and a command whose optional dependencies are not installed, end with a one-line
-message on standard error and a non-zero exit status, never a traceback.
+The course's commands (student copies, the nbgrader edition, the figures, the website) belong
+to the course package, ``eulerlib-course``, and its own command line of that name.
+
+Bad arguments end with a one-line message on standard error and a non-zero exit status, never a
+traceback.
 """
 
 from __future__ import annotations
@@ -24,17 +22,10 @@ from collections.abc import Callable, Sequence
 
 from eulerlib import convert_cli
 from eulerlib._extras import MissingExtraError
-from eulerlib.course import commands as course_commands
 
 #: Subcommand name → (function that configures its sub-parser, one-line help).
 SUBCOMMANDS: dict[str, tuple[Callable[[argparse.ArgumentParser], None], str]] = {
     "convert": (convert_cli.configure_parser, "convert angles and matrices between conventions"),
-    "figures": (course_commands.configure_figures, "redraw every figure of the course"),
-    "notebooks": (
-        course_commands.configure_notebooks,
-        "student copies or an nbgrader edition of the course notebooks, or refresh them",
-    ),
-    "site": (course_commands.configure_site, "build the course website from the notebooks"),
 }
 
 
@@ -42,7 +33,7 @@ def build_parser() -> argparse.ArgumentParser:
     """The argument parser, with one sub-parser per subcommand."""
     parser = argparse.ArgumentParser(
         prog="eulerlib",
-        description="Euler angles and rotation matrices: the command line of the eulerlib course.",
+        description="Euler angles and rotation matrices: the command line of eulerlib.",
     )
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
     for name, (configure, summary) in SUBCOMMANDS.items():

@@ -18,11 +18,11 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._blocks import block_slices
-from eulerlib._euler_kernels import fill_matrices, intrinsic_angles
+from eulerlib._euler_kernels import fill_matrices, intrinsic_angles, relabel_into
+from eulerlib._lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
 from eulerlib._validation import as_vectors, check_flag, matrix_entries
 from eulerlib.conventions import Convention, get_convention
-from eulerlib.gimbal_lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
-from eulerlib.up_axis import relabel_into, up_axis_matrix
+from eulerlib.up_axis import up_axis_matrix
 
 __all__ = ["convert_angles"]
 
@@ -99,14 +99,13 @@ def convert_angles(
 
     parsed_in, parsed_out = source.parsed, target.parsed
     lead = values.shape[:-1]
-    flat = values.reshape(-1, 3)
-    if not parsed_in.intrinsic:
-        flat = flat[:, ::-1]
+    flat = source.to_intrinsic(values.reshape(-1, 3))
     count = math.prod(lead)
     result, locked = np.empty((count, 3)), np.empty(count, dtype=bool)
-    # an extrinsic sequence reads the intrinsic angles reversed: write them so, in place
-    intrinsic = result if parsed_out.intrinsic else result[:, ::-1]
-    zero_first = (target.lock_zeroes == "first") == parsed_out.intrinsic
+    # the kernels give the intrinsic order; write it through a view of the result in that
+    # order (reversed for an extrinsic sequence), so the result is in argument order in place
+    intrinsic = target.to_intrinsic(result)
+    zero_first = target.zeroes_intrinsic_first
     for block in block_slices(count):
         matrices = np.empty((block.stop - block.start, 3, 3))
         fill_matrices(matrices, flat[block], parsed_in, in_degrees)

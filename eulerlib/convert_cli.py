@@ -17,14 +17,16 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import re
 import sys
-import warnings
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
+
+from eulerlib._validation import ROTATION_ATOL
 
 __all__ = ["configure_parser", "parse_matrix_text", "parse_numbers", "run"]
 
@@ -35,7 +37,7 @@ Angles in one convention (--from) become the rotation matrix and the angles of t
 same rotation in each --to convention; or a matrix (--matrix, --matrix-file) becomes
 angles. Gimbal lock is reported in words, with the angle that was set to 0."""
 
-EPILOG = """\
+EPILOG = f"""\
 conventions:
   a preset name (any letter case):
     rose                   ZYX  yaw, pitch, roll         Rose (2015), z up
@@ -56,6 +58,9 @@ examples:
   # Rose's yaw/pitch/roll to ROS's roll/pitch/yaw (same matrix, reversed order)
   eulerlib convert --from rose --to ros --degrees 30 20 10
 
+  # the same attitude of a body between frames with different up axes (Baker's y up)
+  eulerlib convert --from rose --to baker --relabel --degrees 30 20 10
+
   # one set of angles into several conventions at once
   eulerlib convert --from baker --to rose --to ZXZ --degrees 40 25 -15
 
@@ -71,8 +76,11 @@ examples:
 
 output:
   angles are in degrees with --degrees, radians otherwise; --json prints one JSON object.
-  A matrix must be a rotation within --atol (default 1e-6); --repair uses the nearest
-  rotation instead. Errors end with exit status 1 (2 for unknown options).
+  With --relabel the angles describe the same attitude of a body in each convention's own
+  frame (x forward, its up axis up), as convert_angles(..., relabel=True) does; without it,
+  the same matrix. A matrix must be a rotation within --atol (default {ROTATION_ATOL:g}; 0
+  accepts only exact rotations); --repair uses the nearest rotation instead. Errors end with
+  exit status 1 (2 for unknown options).
 """
 
 _SEPARATORS = re.compile(r"[\s,;]+")
@@ -195,14 +203,20 @@ def configure_parser(parser: argparse.ArgumentParser) -> None:
         help="a text file with 3 rows of 3 numbers; '-' reads standard input",
     )
     parser.add_argument(
+        "--relabel",
+        action="store_true",
+        help="keep the attitude, not the matrix: move it between the conventions' frames "
+        "(their up axes), as convert_angles(..., relabel=True)",
+    )
+    parser.add_argument(
         "--repair", action="store_true", help="use the nearest rotation to the given matrix"
     )
     parser.add_argument(
         "--atol",
         type=float,
-        default=1e-6,
+        default=ROTATION_ATOL,
         metavar="TOL",
-        help="how far from a rotation an input matrix may be (default 1e-6)",
+        help=f"how far from a rotation an input matrix may be (default {ROTATION_ATOL:g})",
     )
     parser.add_argument(
         "--precision",
@@ -230,20 +244,18 @@ def _angle_list(names: tuple[str, str, str], values: Any, unit: str, precision: 
     )
 
 
-def _lock_words(facts: Any) -> str:
-    """One sentence about the gimbal lock of one matrix, from its :class:`GimbalLockWarning`."""
-    first, middle, third = facts.convention.angle_names
-    ((pole, combination),) = facts.combinations.items()
+def _lock_words(convention: Any, middle: float) -> str:
+    """One sentence about the gimbal lock of one matrix, whose middle angle is ``middle`` (rad)."""
+    from eulerlib.gimbal_lock import lock_combination
+
+    first, middle_name, third = convention.angle_names
+    pole = convention.pole(middle)
+    _, combination = lock_combination(convention, pole)
     return (
-        f"gimbal lock: the middle angle ({middle}) is {pole}°, so {first} and {third} turn "
-        f"about the same axis and only {combination} is defined; {facts.zeroed} was set to 0 "
-        f"and {facts.carrier} carries the whole turn"
+        f"gimbal lock: the middle angle ({middle_name}) is {pole}°, so {first} and {third} turn "
+        f"about the same axis and only {combination} is defined; {convention.zeroed_name} was "
+        f"set to 0 and {convention.carrier_name} carries the whole turn"
     )
-
-
-def _label(convention: Any) -> str:
-    name, seq = convention.name, convention.seq
-    return name if name == seq else f"{name} ({seq})"
 
 
 def _list_conventions() -> str:
@@ -294,8 +306,14 @@ def _input_angles(args: argparse.Namespace) -> list[float] | None:
 
 def run(args: argparse.Namespace) -> int:
     """Carry out ``eulerlib convert``; bad input raises ValueError/TypeError/OSError."""
-    from eulerlib import GimbalLockWarning, euler_to_matrix, gimbal_lock_status, matrix_to_euler
-    from eulerlib._validation import as_rotations, rotation_check
+    from eulerlib import (
+        change_up_axis,
+        convert_angles,
+        euler_to_matrix,
+        gimbal_lock_status,
+        matrix_to_euler,
+    )
+    from eulerlib._validation import RotationCheck, as_rotations, check_tolerance
     from eulerlib.conventions import get_convention
 
     if args.list:
@@ -303,8 +321,7 @@ def run(args: argparse.Namespace) -> int:
         return 0
     if args.precision < 0 or args.precision > 17:
         raise ValueError(f"--precision must be between 0 and 17, got {args.precision}")
-    if not args.atol > 0 or not np.isfinite(args.atol):
-        raise ValueError(f"--atol must be a positive number, got {args.atol}")
+    atol = check_tolerance(args.atol, "--atol")  # the library's rule: a finite number >= 0
     targets = [get_convention(name, "--to") for name in args.to]
     source = get_convention(args.from_, "--from") if args.from_ is not None else None
     given_matrix = _input_matrix(args)
@@ -320,15 +337,14 @@ def run(args: argparse.Namespace) -> int:
             raise ValueError("--from names the convention of input angles; a matrix needs none")
         if not targets:
             raise ValueError("a matrix needs at least one --to convention to express it in")
-        try:
-            R = as_rotations(
-                given_matrix, "the matrix", rotation_check(True, bool(args.repair), args.atol)
+        if args.relabel:
+            raise ValueError(
+                "--relabel moves angles between the frames of --from and --to; a matrix has "
+                "no --from frame"
             )
-        except ValueError as error:
-            message = str(error).replace("repair=True", "--repair")
-            if "--repair" in message:
-                message += " (or loosen --atol)"
-            raise ValueError(message) from None
+        advice = "pass --repair to use the nearest rotation instead (or loosen --atol)"
+        check = RotationCheck(True, bool(args.repair), atol, advice)
+        R = as_rotations(given_matrix, "the matrix", check)
         report["input"] = {"matrix": given_matrix.tolist()}
     else:
         if angles is None:
@@ -341,6 +357,14 @@ def run(args: argparse.Namespace) -> int:
                 "the angles need --from: name their convention, a preset such as rose, baker "
                 "or ros, or an axis sequence such as ZYX"
             )
+        if args.relabel:
+            for convention in (source, *targets):
+                if convention.up_axis is None:
+                    raise ValueError(
+                        f"--relabel needs an up axis for every convention, but "
+                        f"{convention.name!r} has none; use presets such as rose (z up) or "
+                        "baker (y up)"
+                    )
         R = euler_to_matrix(angles, source, degrees=args.degrees)
         report["input"] = {
             "convention": source.name,
@@ -349,9 +373,10 @@ def run(args: argparse.Namespace) -> int:
             "angles": angles,
         }
         lines.append(
-            f"from {_label(source)}: "
-            f"{_angle_list(source.angle_names, angles, unit, args.precision)}"
+            f"from {source.label}: {_angle_list(source.angle_names, angles, unit, args.precision)}"
         )
+    if args.relabel:
+        report["relabel"] = True
 
     report["matrix"] = R.tolist()
     width = args.precision + 4
@@ -361,25 +386,34 @@ def run(args: argparse.Namespace) -> int:
 
     results = []
     for target in targets:
-        with warnings.catch_warnings(record=True) as caught:
-            warnings.simplefilter("always", GimbalLockWarning)
-            shown = matrix_to_euler(R, target, degrees=args.degrees, validate=False)
-        locks = [w.message for w in caught if isinstance(w.message, GimbalLockWarning)]
-        status = gimbal_lock_status(R, target, degrees=args.degrees, validate=False)
-        note = _lock_words(locks[0]) if locks else None
+        if angles is not None and source is not None:
+            shown = convert_angles(
+                angles, source, target, degrees=args.degrees, relabel=args.relabel, warn=False
+            )
+        else:
+            shown = matrix_to_euler(R, target, degrees=args.degrees, validate=False, warn=False)
+        in_frame = R  # the matrix the target's angles describe, in the target's frame
+        if args.relabel and source is not None and source.up_axis and target.up_axis:
+            in_frame = change_up_axis(R, source.up_axis, target.up_axis, validate=False)
+        status = gimbal_lock_status(in_frame, target, degrees=args.degrees, validate=False)
+        locked = bool(status.locked)
+        middle = math.radians(shown[1]) if args.degrees else float(shown[1])
+        note = _lock_words(target, middle) if locked else None
         results.append(
             {
                 "convention": target.name,
                 "seq": target.seq,
                 "angle_names": list(target.angle_names),
                 "angles": [float(x) for x in shown],
-                "gimbal_lock": bool(locks),
+                "gimbal_lock": locked,
                 "distance_from_lock": float(status.distance),
                 "note": note,
             }
         )
+        frame = f", {target.up_axis} up" if args.relabel else ""
         lines.append(
-            f"to {_label(target)}: {_angle_list(target.angle_names, shown, unit, args.precision)}"
+            f"to {target.label}{frame}: "
+            f"{_angle_list(target.angle_names, shown, unit, args.precision)}"
         )
         if note:
             lines.append(f"  {note}")

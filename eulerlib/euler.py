@@ -49,25 +49,18 @@ takes a ``seq``, with the preset's angle order and lock policy.
 
 from __future__ import annotations
 
-import math
-from collections.abc import Iterable
-
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._blocks import block_slices
-from eulerlib._euler_kernels import fill_matrices, intrinsic_angles
+from eulerlib._euler import angles_to_matrices, matrices_to_angles
 from eulerlib._validation import (
     ROTATION_ATOL,
-    RotationCheck,
     as_matrix_stack,
     as_vectors,
     check_flag,
     rotation_check,
-    rotation_entry_blocks,
 )
 from eulerlib.conventions import Convention, get_convention
-from eulerlib.gimbal_lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
 
 __all__ = ["euler_to_matrix", "matrix_to_euler"]
 
@@ -123,20 +116,6 @@ def euler_to_matrix(
     in_degrees = check_flag(degrees, "degrees")
     values = as_vectors(angles, "angles")
     return angles_to_matrices(values, convention, in_degrees)
-
-
-def angles_to_matrices(
-    values: NDArray[np.float64], convention: Convention, degrees: bool
-) -> NDArray[np.float64]:
-    """Body of :func:`euler_to_matrix` for checked angles of shape ``(..., 3)``."""
-    parsed = convention.parsed
-    flat = values.reshape(-1, 3)
-    if not parsed.intrinsic:
-        flat = flat[:, ::-1]
-    R = np.empty((flat.shape[0], 3, 3))
-    for block in block_slices(flat.shape[0]):
-        fill_matrices(R[block], flat[block], parsed, degrees)
-    return R.reshape(*values.shape[:-1], 3, 3)
 
 
 def matrix_to_euler(
@@ -222,45 +201,3 @@ def matrix_to_euler(
     warn_lock = check_flag(warn, "warn")
     matrices = as_matrix_stack(R, "R")
     return matrices_to_angles(matrices, convention, check, in_degrees, warn_lock)
-
-
-def matrices_to_angles(
-    matrices: NDArray[np.float64],
-    convention: Convention,
-    check: RotationCheck,
-    degrees: bool,
-    warn: bool,
-) -> NDArray[np.float64]:
-    """Body of :func:`matrix_to_euler` for a stack of matrices ``(..., 3, 3)`` to be checked."""
-    blocks = rotation_entry_blocks(matrices, "R", check)
-    return entry_blocks_to_angles(blocks, matrices.shape[:-2], convention, degrees, warn)
-
-
-def entry_blocks_to_angles(
-    blocks: Iterable[tuple[slice, NDArray[np.float64]]],
-    lead: tuple[int, ...],
-    convention: Convention,
-    degrees: bool,
-    warn: bool,
-) -> NDArray[np.float64]:
-    """Euler angles, shape ``(*lead, 3)``, of rotations given block by block.
-
-    ``blocks`` yields ``(block, entries)`` as :func:`eulerlib._validation.rotation_entry_blocks`
-    does, for rotation matrices or for anything turned into their entries block by block (such
-    as quaternions); the lock policy and the warning are applied here, for both.
-    """
-    parsed = convention.parsed
-    count = math.prod(lead)
-    angles, locked = np.empty((count, 3)), np.empty(count, dtype=bool)
-    # an extrinsic sequence reads the intrinsic angles reversed: write them so, in place
-    intrinsic = angles if parsed.intrinsic else angles[:, ::-1]
-    zero_first = (convention.lock_zeroes == "first") == parsed.intrinsic
-    for block, entries in blocks:
-        intrinsic[block], locked[block] = intrinsic_angles(
-            entries, parsed, zero_first, GIMBAL_LOCK_TOLERANCE
-        )
-    if warn:
-        warn_if_locked(convention, locked, angles[:, 1])  # the middle angle either way
-    if degrees:
-        np.degrees(angles, out=angles)
-    return angles.reshape(*lead, 3)

@@ -38,6 +38,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._broadcast import broadcast_blocks, broadcast_shape, selected_index
+from eulerlib._length_kernels import lengths
+from eulerlib._quaternion_kernels import rotvecs_to_entries
+from eulerlib._unit import refuse_overlong
 from eulerlib._validation import (
     ROTATION_ATOL,
     _index_text,
@@ -49,7 +52,6 @@ from eulerlib._validation import (
     rotation_check,
 )
 from eulerlib.angular_velocity import FRAMES
-from eulerlib.axis_angle import rotvecs_to_entries
 
 __all__ = ["integrate_angular_velocity"]
 
@@ -141,9 +143,10 @@ def integrate_angular_velocity(
         with np.errstate(over="ignore", invalid="ignore"):
             turns = flat_omega[on_omega].T * flat_dt[on_dt]  # rotation vectors, shape (3, n)
         _refuse_overflow(turns, shape, block.start, on_omega, on_dt)
-        entries = rotvecs_to_entries(
-            np.ascontiguousarray(turns), in_degrees, "omega * dt", shape, block
-        )
+        rows = np.ascontiguousarray(turns)
+        length = lengths(rows)
+        refuse_overlong(length, "omega * dt", shape, block)
+        entries = rotvecs_to_entries(rows, in_degrees, length)
         step = entries.T.reshape(-1, 3, 3)
         start = flat_R[on_R]
         out[block] = np.matmul(step, start) if in_space else np.matmul(start, step)

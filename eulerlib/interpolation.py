@@ -35,13 +35,13 @@ from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._blocks import BLOCK_SIZE
 from eulerlib._broadcast import broadcast_blocks, broadcast_shape
+from eulerlib._length_kernels import TINY, lengths
 from eulerlib._quaternion_kernels import (
     entries_to_quaternions,
     product,
     quaternions_to_entries,
     transposed_product,
 )
-from eulerlib._unit import TINY, lengths
 from eulerlib._validation import (
     ROTATION_ATOL,
     _index_text,

@@ -26,6 +26,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib._euler import angles_to_matrices, matrices_to_angles
 from eulerlib._validation import (
     ROTATION_ATOL,
     as_matrix_stack,
@@ -34,7 +35,6 @@ from eulerlib._validation import (
     stack_angles,
 )
 from eulerlib.conventions import CONVENTIONS, Convention
-from eulerlib.euler import angles_to_matrices, matrices_to_angles
 
 __all__ = [
     "HeadingAttitudeBank",

@@ -277,12 +277,7 @@ def is_rotation_matrix(R: ArrayLike, *, atol: float = ROTATION_ATOL) -> NDArray[
     array([ True, False, False])
     """
     tolerance = check_tolerance(atol, "atol")
-    try:
-        matrices = as_matrix_stack(R, "R")
-    except ValueError as error:
-        if "must be finite" not in str(error):
-            raise
-        matrices = _with_nonfinite(R)
+    matrices = as_matrix_stack(R, "R", finite=False)
     lead = matrices.shape[:-2]
     flat = matrices.reshape(-1, 3, 3)
     result = np.empty(flat.shape[0], dtype=bool)
@@ -294,14 +289,6 @@ def is_rotation_matrix(R: ArrayLike, *, atol: float = ROTATION_ATOL) -> NDArray[
                 np.abs(determinant(entries) - 1.0) <= tolerance
             )
     return result.reshape(lead)
-
-
-def _with_nonfinite(R: ArrayLike) -> NDArray[np.float64]:
-    """``R`` as a float stack of shape (..., 3, 3) that may hold NaN or infinity."""
-    array = np.asarray(R, dtype=np.float64)
-    if array.ndim < 2 or array.shape[-2:] != (3, 3):
-        raise ValueError(f"R must have shape (..., 3, 3), got shape {array.shape}")
-    return array
 
 
 def nearest_rotation(R: ArrayLike) -> NDArray[np.float64]:

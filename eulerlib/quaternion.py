@@ -55,13 +55,15 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._blocks import block_slices
+from eulerlib._euler import entry_blocks_to_angles
+from eulerlib._length_kernels import out_of_range
 from eulerlib._quaternion_kernels import (
     entries_to_quaternions,
     euler_to_quaternions,
     normalize,
     quaternions_to_entries,
 )
-from eulerlib._unit import out_of_range, scaled_to_unit_size
+from eulerlib._unit import scaled_to_unit_size
 from eulerlib._validation import (
     ROTATION_ATOL,
     as_float_array,
@@ -72,7 +74,6 @@ from eulerlib._validation import (
     rotation_entry_blocks,
 )
 from eulerlib.conventions import Convention, get_convention
-from eulerlib.euler import entry_blocks_to_angles
 
 __all__ = [
     "euler_to_quaternion",
@@ -87,7 +88,7 @@ _ORDER = {False: (3, 0, 1, 2), True: (0, 1, 2, 3)}
 _STORED = {False: (1, 2, 3, 0), True: (0, 1, 2, 3)}
 
 
-def as_quaternions(value: ArrayLike, name: str) -> NDArray[np.float64]:
+def _as_quaternions(value: ArrayLike, name: str) -> NDArray[np.float64]:
     """``value`` as a float array of shape ``(..., 4)`` with finite entries."""
     array = as_float_array(value, name)
     if array.ndim == 0 or array.shape[-1] != 4:
@@ -95,7 +96,7 @@ def as_quaternions(value: ArrayLike, name: str) -> NDArray[np.float64]:
     return array
 
 
-def quaternion_entry_blocks(
+def _quaternion_entry_blocks(
     quaternions: NDArray[np.float64], name: str, scalar_first: bool
 ) -> Iterator[tuple[slice, NDArray[np.float64]]]:
     """The rotation matrices of checked quaternions ``(..., 4)``, block by block.
@@ -124,7 +125,7 @@ def quaternion_entry_blocks(
         yield block, entries
 
 
-def stored(q: NDArray[np.float64], scalar_first: bool) -> NDArray[np.float64]:
+def _stored(q: NDArray[np.float64], scalar_first: bool) -> NDArray[np.float64]:
     """Rows w, x, y, z of a block ``(4, n)`` as stored quaternions ``(n, 4)``."""
     columns: NDArray[np.float64] = q[list(_STORED[scalar_first])].T
     return columns
@@ -179,10 +180,10 @@ def quaternion_to_matrix(q: ArrayLike, *, scalar_first: bool = False) -> NDArray
            [0., 0., 1.]])
     """
     first = check_flag(scalar_first, "scalar_first")
-    quaternions = as_quaternions(q, "q")
+    quaternions = _as_quaternions(q, "q")
     lead = quaternions.shape[:-1]
     out = np.empty((math.prod(lead), 9))
-    for block, entries in quaternion_entry_blocks(quaternions, "q", first):
+    for block, entries in _quaternion_entry_blocks(quaternions, "q", first):
         out[block] = entries.T
     return out.reshape(*lead, 3, 3)
 
@@ -251,7 +252,7 @@ def matrix_to_quaternion(
     for block, entries in rotation_entry_blocks(matrices, "R", check):
         q = entries_to_quaternions(entries)
         normalize(q)  # a matrix orthogonal only within atol gives |q| = 1 ± atol before this
-        out[block] = stored(q, first)
+        out[block] = _stored(q, first)
     return out.reshape(*lead, 4)
 
 
@@ -305,12 +306,10 @@ def euler_to_quaternion(
     first = check_flag(scalar_first, "scalar_first")
     values = as_vectors(angles, "angles")
     parsed = convention.parsed
-    flat = values.reshape(-1, 3)
-    if not parsed.intrinsic:
-        flat = flat[:, ::-1]
+    flat = convention.to_intrinsic(values.reshape(-1, 3))
     out = np.empty((flat.shape[0], 4))
     for block in block_slices(flat.shape[0]):
-        out[block] = stored(euler_to_quaternions(flat[block], parsed, in_degrees), first)
+        out[block] = _stored(euler_to_quaternions(flat[block], parsed, in_degrees), first)
     return out.reshape(*values.shape[:-1], 4)
 
 
@@ -378,6 +377,6 @@ def quaternion_to_euler(
     in_degrees = check_flag(degrees, "degrees")
     first = check_flag(scalar_first, "scalar_first")
     warn_lock = check_flag(warn, "warn")
-    quaternions = as_quaternions(q, "q")
-    blocks = quaternion_entry_blocks(quaternions, "q", first)
+    quaternions = _as_quaternions(q, "q")
+    blocks = _quaternion_entry_blocks(quaternions, "q", first)
     return entry_blocks_to_angles(blocks, quaternions.shape[:-1], convention, in_degrees, warn_lock)

@@ -23,6 +23,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._blocks import block_slices
+from eulerlib._euler_kernels import relabel_into
 from eulerlib._validation import ROTATION_ATOL, as_rotations, check_choice, rotation_check
 
 __all__ = ["change_up_axis", "up_axis_matrix"]
@@ -80,17 +81,6 @@ def up_axis_matrix(from_up: str = "y", to_up: str = "z") -> NDArray[np.float64]:
     target = check_choice(to_up, "to_up", UP_AXES)
     matrix: NDArray[np.float64] = _TO_Z_UP[target].T @ _TO_Z_UP[source]
     return matrix + 0.0  # no negative zeros
-
-
-def relabel_into(
-    out: NDArray[np.float64], matrices: NDArray[np.float64], P: NDArray[np.float64]
-) -> None:
-    """Write ``P R Pᵀ`` for each ``R`` of ``matrices`` (n, 3, 3) into ``out``; ``P`` a signed
-    permutation."""
-    perm = np.argmax(np.abs(P), axis=1)
-    signs = P[np.arange(3), perm]
-    np.multiply(matrices[:, perm][:, :, perm], np.outer(signs, signs), out=out)
-    out += 0.0  # no negative zeros
 
 
 def change_up_axis(

@@ -25,7 +25,6 @@ from __future__ import annotations
 
 import os
 from collections import defaultdict
-from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
@@ -58,19 +57,6 @@ SEED = 20150214
 def rng() -> np.random.Generator:
     """A seeded generator, so every failure can be replayed."""
     return np.random.default_rng(SEED)
-
-
-@pytest.fixture(autouse=True)
-def _numpy_print_options() -> Iterator[None]:
-    """NumPy's print options as they were before each test.
-
-    A test that runs notebook code in this process (the exercises) runs its
-    ``np.set_printoptions``; without this, a doctest that happens to run after it on the same
-    worker would print numbers differently.
-    """
-    options = np.get_printoptions()
-    yield
-    np.set_printoptions(**options)
 
 
 # --- checks around the session ------------------------------------------------------------------

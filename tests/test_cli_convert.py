@@ -204,6 +204,69 @@ def test_repair_accepts_a_rounded_matrix() -> None:
     assert_allclose(report["conversions"][0]["angles"], [10, 20, 30], atol=1e-2)
 
 
+# --- relabel and the tolerance --------------------------------------------------------------------
+
+
+def test_relabel_keeps_the_attitude_between_frames() -> None:
+    """Rose's z-up yaw/pitch/roll as Baker's y-up heading/attitude/bank of the same body.
+
+    Oracles: SciPy, with the frame change written out (y-up coordinates turn into z-up ones by
+    R_x(+90°), so Baker's matrix is R_x(90°)ᵀ R R_x(90°)), and the identity
+    R_x(90°) R_y(h) R_z(a) R_x(b) R_x(90°)ᵀ = R_z(h) R_y(−a) R_x(b), typed in: heading = yaw,
+    attitude = −pitch, bank = roll.
+    """
+    report = convert_json(run_in_process, "--from", "rose", "--to", "baker", "--relabel",
+                          "--degrees", "30", "20", "10")  # fmt: skip
+    baker = report["conversions"][0]
+    P = Rotation.from_euler("x", 90, degrees=True)
+    in_y_up = P.inv() * Rotation.from_euler("ZYX", [30, 20, 10], degrees=True) * P
+    assert_allclose(baker["angles"], in_y_up.as_euler("YZX", degrees=True), atol=1e-10)
+    assert_allclose(baker["angles"], [30, -20, 10], atol=1e-10)
+    assert baker["gimbal_lock"] is False
+    assert baker["distance_from_lock"] == pytest.approx(70)
+    assert report["relabel"] is True
+    # without --relabel the matrix is kept instead, and the angles differ (heading 22.8°)
+    kept = convert_json(run_in_process, "--from", "rose", "--to", "baker", "--degrees",
+                        "30", "20", "10")  # fmt: skip
+    same_matrix = Rotation.from_euler("ZYX", [30, 20, 10], degrees=True).as_euler("YZX", True)
+    assert_allclose(kept["conversions"][0]["angles"], same_matrix, atol=1e-10)
+
+
+def test_relabel_at_lock_is_reported_in_words() -> None:
+    # Rose's pitch -90° is Baker's attitude +90°, the pole where Baker sets bank to 0
+    result = convert(run_in_process, "--from", "rose", "--to", "baker", "--relabel",
+                     "--degrees", "40", "-90", "10")  # fmt: skip
+    assert result.returncode == 0, result.stderr
+    assert "to baker (YZX), y up: heading = 50°, attitude = 90°, bank = 0°" in result.stdout
+    assert "only heading + bank is defined; bank was set to 0" in result.stdout
+
+
+@pytest.mark.parametrize(
+    ("args", "words"),
+    [
+        (["--from", "ZYX", "--to", "baker", "--relabel", "1", "2", "3"], ["--relabel", "'ZYX'"]),
+        (["--to", "rose", "--relabel", "--matrix=1,0,0,0,1,0,0,0,1"], ["--relabel"]),
+        (["--to", "rose", "--atol", "-1", "--matrix=1,0,0,0,1,0,0,0,1"], ["--atol", "-1"]),
+        (["--to", "rose", "--atol", "nan", "--matrix=1,0,0,0,1,0,0,0,1"], ["--atol", "nan"]),
+    ],
+)
+def test_bad_relabel_and_atol_fail_cleanly(args: list[str], words: list[str]) -> None:
+    assert_clean_failure(convert(run_in_process, *args), *words)
+
+
+def test_atol_zero_accepts_exact_rotations_only() -> None:
+    """``--atol 0``, which the library accepts too: only an exactly orthogonal matrix passes."""
+    exact = convert_json(run_in_process, "--to", "rose", "--degrees", "--atol", "0",
+                         "--matrix=0,-1,0,1,0,0,0,0,1")  # fmt: skip
+    assert_allclose(exact["conversions"][0]["angles"], [90, 0, 0], atol=1e-12)
+    # a matrix whose entries carry one unit of rounding: R Rᵀ − I is not exactly 0
+    noisy = np.eye(3)
+    noisy[0, 0] = np.nextafter(1.0, 2.0)
+    numbers = ",".join(repr(float(x)) for x in noisy.ravel())
+    refused = convert(run_in_process, "--to", "rose", "--atol", "0", f"--matrix={numbers}")
+    assert_clean_failure(refused, "not a rotation matrix", "--repair", "--atol")
+
+
 def test_list_and_help() -> None:
     listing = convert(run_in_process, "--list")
     assert listing.returncode == 0

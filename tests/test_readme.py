@@ -37,18 +37,19 @@ def test_ci_runs_the_readme_test_command_verbatim() -> None:
 
 
 def test_ci_runs_the_nbgrader_tests_that_the_readme_command_skips() -> None:
-    # The README's command runs tests/test_nbgrader.py without nbgrader's own run (minutes of
-    # autograding; skipped unless EULERLIB_NBGRADER=1); CI runs it as a step of its own, with the
-    # teach extra that installs nbgrader.
-    test_file = (ROOT / "tests" / "test_nbgrader.py").read_text(encoding="utf-8")
+    # The README's command runs course/tests/test_nbgrader.py without nbgrader's own run (minutes
+    # of autograding; skipped unless EULERLIB_NBGRADER=1); CI runs it as a step of its own, with
+    # the course's teach extra that installs nbgrader.
+    test_file = (ROOT / "course" / "tests" / "test_nbgrader.py").read_text(encoding="utf-8")
     assert 'os.environ.get("EULERLIB_NBGRADER") == "1"' in test_file
     ci_script = (ROOT / ".ci" / "run").read_text(encoding="utf-8").splitlines()
     readme_step = next(i for i, line in enumerate(ci_script) if line.endswith("python -m pytest"))
-    install = next(i for i, line in enumerate(ci_script) if '-e ".[test,teach]"' in line)
+    install = next(i for i, line in enumerate(ci_script) if '"./course[test,teach]"' in line)
     run = next(
         i
         for i, line in enumerate(ci_script)
-        if line.startswith("EULERLIB_NBGRADER=1 ") and line.endswith(" tests/test_nbgrader.py")
+        if line.startswith("EULERLIB_NBGRADER=1 ")
+        and line.endswith(" course/tests/test_nbgrader.py")
     )
     assert readme_step < install < run
 
@@ -61,6 +62,7 @@ def test_readme_opens_the_course_in_jupyterlab() -> None:
 
 
 def test_readme_command_lines_are_commands_the_cli_takes() -> None:
+    # The library's command line; the course's, eulerlib-course, is checked by the course tests.
     commands = [line for block in _blocks("bash") for line in block.splitlines()]
     shown = [c.split("#")[0] for c in commands if c.startswith(".venv/bin/eulerlib ")]
     assert {shlex.split(c)[1] for c in shown} == set(cli.SUBCOMMANDS)

@@ -21,15 +21,13 @@ What there is
   :func:`plot_gimbal` and :func:`animate_gimbal_lock`: three nested rings driven by the three
   angles. At the singular middle angle (±90° for Tait–Bryan, 0° or 180° for proper Euler) two
   rings lie in one plane and the first and third rotation axes coincide: gimbal lock.
-* :mod:`~eulerlib.plotting.explorer`: :func:`explorer` (JupyterLab, needs ipywidgets), an
-  :class:`Explorer` with sliders for the three angles and a convention selector, and its
-  testable core :func:`explorer_state`, which returns an :class:`ExplorerState`. Without a
-  kernel the explorer's output is a picture of its starting setting.
 * :mod:`~eulerlib.plotting.paths`: :func:`draw_axis_path` and :func:`plot_axis_paths`: the path
   that one body axis (the nose, by default) traces on the unit sphere while the body turns
   through a stack of rotations, to compare interpolations or follow a motion.
 
-Everything listed is available directly from ``eulerlib.plotting``.
+Everything listed is available directly from ``eulerlib.plotting``. The course's interactive
+explorer (sliders in JupyterLab, built on these drawings) is part of the course package,
+:mod:`eulerlib_course.explorer`.
 
 A sequence ``seq`` means what it means everywhere in eulerlib (and in SciPy): uppercase is
 intrinsic, lowercase extrinsic, angle ``i`` goes with letter ``i``. An extrinsic sequence is
@@ -69,7 +67,6 @@ except ImportError as error:
 
 from eulerlib.plotting._base import AXIS_COLORS, HIGHLIGHT_COLOR, RING_COLORS, RING_RADII
 from eulerlib.plotting.aircraft import aircraft_segments, draw_aircraft, plot_body_rotation
-from eulerlib.plotting.explorer import Explorer, ExplorerState, explorer, explorer_state
 from eulerlib.plotting.frames import draw_frame, new_3d_axes, plot_frames, plot_sequence_steps
 from eulerlib.plotting.gimbal import (
     animate_gimbal_lock,
@@ -84,15 +81,11 @@ __all__ = [
     "HIGHLIGHT_COLOR",
     "RING_COLORS",
     "RING_RADII",
-    "Explorer",
-    "ExplorerState",
     "aircraft_segments",
     "animate_gimbal_lock",
     "draw_aircraft",
     "draw_axis_path",
     "draw_frame",
-    "explorer",
-    "explorer_state",
     "gimbal_ring_normals",
     "gimbal_ring_points",
     "new_3d_axes",

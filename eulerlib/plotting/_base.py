@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from contextlib import contextmanager
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -49,8 +49,7 @@ def intrinsic_steps(
     values: NDArray[np.float64], convention: Convention
 ) -> tuple[tuple[int, int, int], NDArray[np.float64]]:
     """Axes and angles (radians) of the intrinsic form of a convention, for one set of angles."""
-    parsed = convention.parsed
-    return parsed.intrinsic_axes, values if parsed.intrinsic else values[::-1]
+    return convention.parsed.intrinsic_axes, convention.to_intrinsic(values)
 
 
 def partial_products(
@@ -98,8 +97,27 @@ def degrees_text(values: NDArray[np.float64]) -> str:
     return ", ".join(f"{v:.4g}°" for v in np.degrees(values) + 0.0)
 
 
-def convention_label(convention: Convention) -> str:
-    """``"ZYX"`` for a bare sequence, ``"rose (ZYX)"`` for a named convention."""
-    if convention.name == convention.seq:
-        return convention.seq
-    return f"{convention.name} ({convention.seq})"
+def arrow_head(
+    ax: Axes3D, tip: NDArray[np.float64], direction: NDArray[np.float64], size: float, **style: Any
+) -> Any:
+    """A small filled cone with its point at ``tip``, pointing along ``direction``.
+
+    A zero ``direction`` (a column of a matrix drawn with ``validate=False``) gets an empty cone.
+    """
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    length = float(np.linalg.norm(direction))
+    faces = []
+    if length > 0.0:
+        unit = direction / length
+        helper = np.eye(3)[int(np.argmin(np.abs(unit)))]
+        u = np.cross(unit, helper)
+        u /= np.linalg.norm(u)
+        v = np.cross(unit, u)
+        t = np.linspace(0.0, 2.0 * np.pi, 9)
+        base = tip - 2.5 * size * unit
+        rim = base + size * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
+        faces = [[tip, rim[n], rim[n + 1]] for n in range(len(t) - 1)]
+    cone = Poly3DCollection(faces, linewidths=0.0, **style)
+    ax.add_collection3d(cone)
+    return cone

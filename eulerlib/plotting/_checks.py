@@ -31,7 +31,7 @@ from eulerlib._validation import (
     as_rotations,
     as_vectors,
     check_flag,
-    check_tolerance,
+    real_number,
 )
 
 if TYPE_CHECKING:
@@ -51,22 +51,16 @@ def check_positive(value: object, name: str) -> float:
     ...
     ValueError: scale must be a finite number > 0, got 0
     """
-    try:
-        number = check_tolerance(value, name)  # the kind of number: one rule, in _validation
-    except ValueError:
-        number = math.nan
-    if not number > 0.0:
+    number = real_number(value, name)  # the kind of number: one rule, in _validation
+    if not (math.isfinite(number) and number > 0.0):
         raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
     return number
 
 
 def check_alpha(value: object, name: str = "alpha") -> float:
     """An opacity: a real number from 0 (invisible) to 1 (opaque)."""
-    try:
-        number = check_tolerance(value, name)
-    except ValueError:
-        number = math.nan
-    if not number <= 1.0:
+    number = real_number(value, name)
+    if not 0.0 <= number <= 1.0:
         raise ValueError(f"{name} must be a number from 0 to 1, got {value!r}")
     return number
 

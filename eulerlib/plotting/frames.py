@@ -22,7 +22,7 @@ from eulerlib.plotting._base import (
     HIGHLIGHT_COLOR,
     PRIME,
     add_3d_axes,
-    convention_label,
+    arrow_head,
     degrees_text,
     intrinsic_steps,
     partial_products,
@@ -109,32 +109,6 @@ def new_3d_axes(
         return add_3d_axes(target, where, half, heading)
     with pyplot_figure(size) as new:
         return add_3d_axes(new, where, half, heading)
-
-
-def _arrow_head(
-    ax: Axes3D, tip: NDArray[np.float64], direction: NDArray[np.float64], size: float, **style: Any
-) -> Any:
-    """A small filled cone with its point at ``tip``, pointing along ``direction``.
-
-    A zero ``direction`` (a column of a matrix drawn with ``validate=False``) gets an empty cone.
-    """
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
-
-    length = float(np.linalg.norm(direction))
-    faces = []
-    if length > 0.0:
-        unit = direction / length
-        helper = np.eye(3)[int(np.argmin(np.abs(unit)))]
-        u = np.cross(unit, helper)
-        u /= np.linalg.norm(u)
-        v = np.cross(unit, u)
-        t = np.linspace(0.0, 2.0 * np.pi, 9)
-        base = tip - 2.5 * size * unit
-        rim = base + size * (np.cos(t)[:, None] * u + np.sin(t)[:, None] * v)
-        faces = [[tip, rim[n], rim[n + 1]] for n in range(len(t) - 1)]
-    cone = Poly3DCollection(faces, linewidths=0.0, **style)
-    ax.add_collection3d(cone)
-    return cone
 
 
 def draw_frame(
@@ -260,7 +234,7 @@ def frame_artists(
             linewidth=linewidth,
             label=name,
         )
-        head = _arrow_head(ax, tip, direction, 0.045 * scale, color=colors[i], alpha=alpha)
+        head = arrow_head(ax, tip, direction, 0.045 * scale, color=colors[i], alpha=alpha)
         where = start + 1.15 * scale * direction
         text = ax.text(
             where[0],
@@ -482,7 +456,7 @@ def plot_sequence_steps(
                 multialignment="center",
             )
         fig.suptitle(
-            f"{convention_label(convention)} with angles ({degrees_text(values)}): "
+            f"{convention.label} with angles ({degrees_text(values)}): "
             "the same rotation, read two ways",
             fontsize=12,
         )

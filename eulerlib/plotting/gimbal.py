@@ -182,9 +182,7 @@ def _draw_gimbal(ax: Axes3D, values: NDArray[np.float64], convention: Convention
     frames = partial_products(axes, steps)
     rings = _ring_points(values, convention, 120)
     named = convention.name != convention.seq
-    angle_names = convention.angle_names
-    if not convention.parsed.intrinsic:
-        angle_names = angle_names[::-1]
+    angle_names = convention.to_intrinsic(convention.angle_names)
     names = [f"{AXIS_LETTERS[a]}{PRIME * r}" for r, a in enumerate(axes)]
     handles = []
     for r in range(3):

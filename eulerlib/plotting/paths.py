@@ -23,6 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._validation import ROTATION_ATOL, as_rotations, rotation_check
 from eulerlib.plotting._base import AXIS_LETTERS, add_3d_axes, pyplot_figure
+from eulerlib.plotting._base import arrow_head as _arrow_head
 from eulerlib.plotting._checks import (
     check_alpha,
     check_axes3d,
@@ -35,7 +36,6 @@ from eulerlib.plotting._checks import (
     check_texts,
     rotation_stack,
 )
-from eulerlib.plotting.frames import _arrow_head
 from eulerlib.sequences import parse_axis
 
 if TYPE_CHECKING:

@@ -82,7 +82,7 @@ def angular_velocity_jacobian(
     parsed, values = euler_angles(angles, seq)
     in_space = check_choice(frame, "frame", FRAMES) == "space"
     axes = parsed.intrinsic_axes
-    intrinsic_values = values if parsed.intrinsic else values[::-1]
+    intrinsic_values = parsed.intrinsic_order(values)
     A, B, C = (
         turn_about(basis_vector(axis), angle)
         for axis, angle in zip(axes, intrinsic_values, strict=True)
@@ -92,9 +92,8 @@ def angular_velocity_jacobian(
         columns = [e[0], A * e[1], A * B * e[2]]
     else:
         columns = [C.T * B.T * e[0], C.T * e[1], e[2]]
-    if not parsed.intrinsic:
-        columns.reverse()
-    return sp.Matrix.hstack(*columns).applyfunc(sp.expand)
+    written = parsed.intrinsic_order((columns[0], columns[1], columns[2]))
+    return sp.Matrix.hstack(*written).applyfunc(sp.expand)
 
 
 def jacobian_determinant(angles: Any, seq: str | Convention = "ZYX", *, frame: str = "body") -> Any:

@@ -83,10 +83,8 @@ def euler_product(parsed: Sequence, values: tuple[Any, Any, Any]) -> Any:
     """The product of the three elementary rotations of a checked sequence, expanded."""
     factors = [
         turn_about(basis_vector(axis), angle)
-        for axis, angle in zip(parsed.axes, values, strict=True)
+        for axis, angle in zip(parsed.intrinsic_axes, parsed.intrinsic_order(values), strict=True)
     ]
-    if not parsed.intrinsic:
-        factors.reverse()
     product = factors[0] * factors[1] * factors[2]
     return product.applyfunc(sp.expand)
 

@@ -18,7 +18,6 @@ import sympy as sp
 
 from eulerlib.conventions import Convention, get_convention
 from eulerlib.gimbal_lock import lock_combination
-from eulerlib.sequences import Sequence
 from eulerlib.symbolic._arguments import as_expressions
 from eulerlib.symbolic.euler import euler_product, refuse_convention_first
 
@@ -50,18 +49,26 @@ def _same_matrix(A: Any, B: Any) -> bool:
     return bool(difference.is_zero_matrix)
 
 
-def combination_sign(parsed: Sequence, middle: Any, zeroes_first: bool) -> int:
+def _at_lock(convention: Convention, middle: Any, combination: Any) -> tuple[Any, Any, Any]:
+    """The three angles in argument order at lock: the zeroed one 0, the carrier ``combination``."""
+    values = [0, middle, 0]
+    values[convention.carrier_index] = combination
+    return values[0], values[1], values[2]
+
+
+def _combination_sign(convention: Convention, middle: Any) -> int:
     """The sign ``σ`` with which the carrier takes ``carrier + σ·zeroed`` at this pole.
 
     Found with two fresh symbols for the outer angles, so that it does not depend on what the
     caller's angles are (numbers such as 1 and 2 would hide the identity ``sin 3 = sin(1 + 2)``).
     """
+    parsed = convention.parsed
     first, third = sp.Dummy("first", real=True), sp.Dummy("third", real=True)
-    at_pole = euler_product(parsed, (first, middle, third))
-    zeroed, carrier = (first, third) if zeroes_first else (third, first)
+    outer = (first, middle, third)
+    at_pole = euler_product(parsed, outer)
+    zeroed, carrier = outer[convention.zeroed_index], outer[convention.carrier_index]
     for sign in (-1, 1):
-        combination = carrier + sign * zeroed
-        values = (0, middle, combination) if zeroes_first else (combination, middle, 0)
+        values = _at_lock(convention, middle, carrier + sign * zeroed)
         if _same_matrix(euler_product(parsed, values), at_pole):
             return sign
     raise AssertionError(  # pragma: no cover - at a pole one of the two always matches
@@ -127,9 +134,7 @@ def gimbal_lock_matrix(angles: Any, seq: str | Convention, *, pole: float) -> An
     parsed = convention.parsed
     first, third = as_expressions(angles, "angles", 2, "outer angles (first, third)")
     middle = singular_middle(pole, convention)
-    zeroes_first = convention.lock_zeroes == "first"
-    sign = combination_sign(parsed, middle, zeroes_first)
-    zeroed, carrier = (first, third) if zeroes_first else (third, first)
-    combination = carrier + sign * zeroed
-    values = (0, middle, combination) if zeroes_first else (combination, middle, 0)
-    return euler_product(parsed, values)
+    sign = _combination_sign(convention, middle)
+    outer = (first, middle, third)
+    zeroed, carrier = outer[convention.zeroed_index], outer[convention.carrier_index]
+    return euler_product(parsed, _at_lock(convention, middle, carrier + sign * zeroed))

@@ -14,7 +14,7 @@ import pytest
 import sympy as sp
 from scipy.spatial.transform import Rotation
 
-from eulerlib.course.exercises import (
+from eulerlib_course.exercises import (
     AnglesJudge,
     ArrayJudge,
     ChoiceJudge,
@@ -28,7 +28,7 @@ from eulerlib.course.exercises import (
     exercises,
     given,
 )
-from eulerlib.course.exercises.reading import Unreadable, read_numbers
+from eulerlib_course.exercises.reading import Unreadable, read_numbers
 
 QUARTER_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])  # typed in
 

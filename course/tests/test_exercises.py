@@ -25,10 +25,10 @@ from typing import Any
 import nbformat
 import pytest
 
-from eulerlib.course.exercises import ChoiceJudge, Exercise, exercises
-from eulerlib.course.student import student_copy
+from eulerlib_course.exercises import ChoiceJudge, Exercise, exercises
+from eulerlib_course.student import student_copy
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 NOTEBOOKS = sorted((REPO / "notebooks").glob("[0-9][0-9]_*.ipynb"))
 IDS = [path.name for path in NOTEBOOKS]
 KEY = exercises()
@@ -179,7 +179,7 @@ def test_student_copy_diagnoses_every_answer_of_the_test_tables(path: Path) -> N
     copy = student_copy(read(path))
     first = next(cell for cell in copy.cells if cell.cell_type == "code")
     namespace: dict[str, Any] = {}
-    run(without_magics(first.source), namespace)  # its print options: see tests/conftest.py
+    run(without_magics(first.source), namespace)  # its print options: see the top conftest.py
     check_every_example(path, copy, namespace)
 
 

@@ -33,7 +33,7 @@ def read_numbers(answer: object, shape: tuple[int, ...], what: str) -> NDArray[n
     >>> read_numbers("0.5", (), "your angle")
     Traceback (most recent call last):
     ...
-    eulerlib.course.exercises.reading.Unreadable: your angle is text ('0.5'); write the numbers,
+    eulerlib_course.exercises.reading.Unreadable: your angle is text ('0.5'); write the numbers,
     without quotes
     """
     if answer is None:

@@ -1,29 +1,29 @@
-"""The course's commands: ``eulerlib notebooks student|nbgrader|refresh``, ``eulerlib figures``
-and ``eulerlib site build``.
+"""The course's commands: ``eulerlib-course notebooks student|nbgrader|refresh``,
+``eulerlib-course figures`` and ``eulerlib-course site build``.
 
-* ``eulerlib notebooks student --out DIR [--src DIR] [--force]`` (for teachers) writes a
-  student copy of every course notebook into ``DIR`` (:mod:`eulerlib.course.student`). It does
+* ``eulerlib-course notebooks student --out DIR [--src DIR] [--force]`` (for teachers) writes a
+  student copy of every course notebook into ``DIR`` (:mod:`eulerlib_course.student`). It does
   not overwrite existing copies unless ``--force`` is given.
-* ``eulerlib notebooks nbgrader --out DIR [--src DIR] [--force]`` (for teachers who grade with
-  nbgrader) writes the course as an nbgrader course folder: ``DIR/nbgrader_config.py`` and one
-  assignment per notebook under ``DIR/source/`` (:mod:`eulerlib.course.nbgrader_edition`). It
-  needs the ``teach`` extra (nbgrader) and does not overwrite an earlier edition unless
-  ``--force`` is given.
-* ``eulerlib notebooks refresh [NOTEBOOK ...]`` (for maintainers) re-executes notebooks and
-  stores them in normal form (:mod:`eulerlib.course.notebook_form`); all of ``notebooks/`` by
+* ``eulerlib-course notebooks nbgrader --out DIR [--src DIR] [--force]`` (for teachers who
+  grade with nbgrader) writes the course as an nbgrader course folder:
+  ``DIR/nbgrader_config.py`` and one assignment per notebook under ``DIR/source/``
+  (:mod:`eulerlib_course.nbgrader_edition`). It needs the ``teach`` extra (nbgrader) and does
+  not overwrite an earlier edition unless ``--force`` is given.
+* ``eulerlib-course notebooks refresh [NOTEBOOK ...]`` (for maintainers) re-executes notebooks
+  and stores them in normal form (:mod:`eulerlib_course.notebook_form`); all of ``notebooks/`` by
   default.
-* ``eulerlib figures [--out DIR]`` (for maintainers) redraws every figure of the course
-  (:mod:`eulerlib.course.figures`) into ``figures/`` by default.
-* ``eulerlib site build [--out DIR]`` (for teachers and maintainers) builds the course website
-  from the stored notebooks (:mod:`eulerlib.course.site`) into ``build/site/`` by default.
+* ``eulerlib-course figures [--out DIR]`` (for maintainers) redraws every figure of the course
+  (:mod:`eulerlib_course.figures`) into ``figures/`` by default.
+* ``eulerlib-course site build [--out DIR]`` (for teachers and maintainers) builds the course
+  website from the stored notebooks (:mod:`eulerlib_course.site`) into ``build/site/`` by default.
 
 The course itself (``notebooks/``, ``figures/``) lives in the repository, not in the installed
 package: without ``--src`` or ``--out`` the commands work on those folders of the current
 directory, and say so when they are not there. The notebook tools (nbformat, nbclient,
 nbconvert), matplotlib and Jupyter Book are imported only when a command runs; when they are
-missing, the command ends with one line naming the extra to install. Like every subcommand of
-:mod:`eulerlib.cli`, these end with one line on standard error and a non-zero exit status when
-something is wrong, never with a traceback.
+missing, the command ends with one line naming what to install (:mod:`eulerlib_course._extras`).
+Like every subcommand of :mod:`eulerlib_course.cli`, these end with one line on standard error
+and a non-zero exit status when something is wrong, never with a traceback.
 """
 
 from __future__ import annotations
@@ -32,7 +32,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from eulerlib._extras import require
+from eulerlib_course._extras import require
 
 __all__ = [
     "configure_figures",
@@ -46,12 +46,14 @@ __all__ = [
 #: The course's folders, relative to the top folder of the repository.
 NOTEBOOK_FOLDER = Path("notebooks")
 FIGURE_FOLDER = Path("figures")
-#: The packages of the ``notebooks`` extra that ``eulerlib notebooks`` imports.
+#: The notebook tools (dependencies of the course package) that ``eulerlib-course notebooks``
+#: imports.
 NOTEBOOK_TOOLS = ("nbformat", "nbclient", "nbconvert")
-#: The packages of the ``site`` extra that ``eulerlib site build`` imports (the MathJax package's
-#: name is its import name).
+#: The packages of the ``site`` extra that ``eulerlib-course site build`` imports (the MathJax
+#: package's name is its import name).
 SITE_TOOLS = ("jupyter_book", "sphinx-mathjax-offline", "nbformat", "nbconvert")
-#: What ``eulerlib notebooks nbgrader`` needs: the notebook tools, and nbgrader to use the edition.
+#: What ``eulerlib-course notebooks nbgrader`` needs: the notebook tools, and nbgrader to use
+#: the edition.
 GRADING_TOOLS = ("nbformat", "nbconvert", "nbgrader")
 
 
@@ -116,18 +118,18 @@ def _course_folder(folder: Path, instead: str) -> Path:
 
 
 def run_notebooks(args: argparse.Namespace) -> int:
-    """Carry out ``eulerlib notebooks student|nbgrader|refresh``."""
+    """Carry out ``eulerlib-course notebooks student|nbgrader|refresh``."""
     if args.action == "nbgrader":
-        require(GRADING_TOOLS, extra="teach", needed_by="eulerlib notebooks nbgrader")
+        require(GRADING_TOOLS, extra="teach", needed_by="eulerlib-course notebooks nbgrader")
         return _nbgrader(args.src, args.out, force=args.force)
-    require(NOTEBOOK_TOOLS, extra="notebooks", needed_by=f"eulerlib notebooks {args.action}")
+    require(NOTEBOOK_TOOLS, extra=None, needed_by=f"eulerlib-course notebooks {args.action}")
     if args.action == "refresh":
         return _refresh(args.notebooks)
     return _student(args.src, args.out, force=args.force)
 
 
 def _student(src: Path | None, out: Path, *, force: bool) -> int:
-    from eulerlib.course.student import write_student_copies
+    from eulerlib_course.student import write_student_copies
 
     source = src if src is not None else _course_folder(NOTEBOOK_FOLDER, "pass --src DIR")
     try:
@@ -139,7 +141,7 @@ def _student(src: Path | None, out: Path, *, force: bool) -> int:
 
 
 def _nbgrader(src: Path | None, out: Path, *, force: bool) -> int:
-    from eulerlib.course.nbgrader_edition import write_nbgrader_edition
+    from eulerlib_course.nbgrader_edition import write_nbgrader_edition
 
     source = src if src is not None else _course_folder(NOTEBOOK_FOLDER, "pass --src DIR")
     try:
@@ -153,7 +155,7 @@ def _nbgrader(src: Path | None, out: Path, *, force: bool) -> int:
 def _refresh(paths: list[Path]) -> int:
     from nbclient.exceptions import CellExecutionError
 
-    from eulerlib.course.notebook_form import refresh_notebook
+    from eulerlib_course.notebook_form import refresh_notebook
 
     if not paths:
         folder = _course_folder(NOTEBOOK_FOLDER, "name the notebooks to refresh")
@@ -173,9 +175,9 @@ def _refresh(paths: list[Path]) -> int:
 
 
 def run_figures(args: argparse.Namespace) -> int:
-    """Carry out ``eulerlib figures``."""
-    require(("matplotlib",), extra="plot", needed_by="eulerlib figures")
-    from eulerlib.course.figures import write_figures
+    """Carry out ``eulerlib-course figures``."""
+    require(("matplotlib",), extra=None, needed_by="eulerlib-course figures")
+    from eulerlib_course.figures import write_figures
 
     out = args.out if args.out is not None else _course_folder(FIGURE_FOLDER, "pass --out DIR")
     written = write_figures(out)
@@ -199,9 +201,9 @@ def configure_site(parser: argparse.ArgumentParser) -> None:
 
 
 def run_site(args: argparse.Namespace) -> int:
-    """Carry out ``eulerlib site build``."""
-    require(SITE_TOOLS, extra="site", needed_by=f"eulerlib site {args.action}")
-    from eulerlib.course.site import DEFAULT_OUT, build_site
+    """Carry out ``eulerlib-course site build``."""
+    require(SITE_TOOLS, extra="site", needed_by=f"eulerlib-course site {args.action}")
+    from eulerlib_course.site import DEFAULT_OUT, build_site
 
     out = args.out if args.out is not None else DEFAULT_OUT
     built = build_site(Path("."), out)

@@ -4,7 +4,7 @@ The committed notebooks are the teacher's edition. Each exercise in them is thre
 cells: ``exercise`` (the learner's cell, whose answer starts as ``...``), ``solution`` (the
 worked answer, stored folded) and ``check`` (a self-check that reports on the answer). A student
 copy is the same notebook with the ``solution`` cells removed and every output cleared, in the
-normal form of :mod:`eulerlib.course.notebook_form`; run top to bottom, each check then finds
+normal form of :mod:`eulerlib_course.notebook_form`; run top to bottom, each check then finds
 the ``...`` and says "not yet" until the learner fills in an answer.
 
 The copy is made by nbconvert's ``TagRemovePreprocessor`` (removing the cells tagged
@@ -24,7 +24,7 @@ from typing import Any
 from nbconvert.preprocessors import ClearOutputPreprocessor, TagRemovePreprocessor
 
 from eulerlib._validation import check_flag
-from eulerlib.course.notebook_form import normalize_notebook, read_notebook, write_notebook
+from eulerlib_course.notebook_form import normalize_notebook, read_notebook, write_notebook
 
 __all__ = ["SOLUTION_TAG", "student_copy", "student_copy_paths", "write_student_copies"]
 

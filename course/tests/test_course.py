@@ -18,11 +18,11 @@ from pathlib import Path
 import nbformat
 import pytest
 
-from eulerlib import cli
-from eulerlib.course.notebook_form import KERNELSPEC, is_normalized, normalize_notebook
-from eulerlib.course.student import student_copy, write_student_copies
+from eulerlib_course import cli
+from eulerlib_course.notebook_form import KERNELSPEC, is_normalized, normalize_notebook
+from eulerlib_course.student import student_copy, write_student_copies
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 NOTEBOOK_DIR = REPO / "notebooks"
 NOTEBOOKS = sorted(NOTEBOOK_DIR.glob("[0-9][0-9]_*.ipynb"))
 GLOSSARY = NOTEBOOK_DIR / "glossary.ipynb"
@@ -78,7 +78,7 @@ def test_file_names_are_numbered_consecutively_from_01() -> None:
 @notebook_params
 def test_notebook_is_normalized(path: Path) -> None:
     assert is_normalized(path), (
-        f"{path.name} is not in normal form: run `eulerlib notebooks refresh {path}`"
+        f"{path.name} is not in normal form: run `eulerlib-course notebooks refresh {path}`"
     )
 
 
@@ -401,7 +401,8 @@ def test_refresh_of_a_failing_notebook_fails_in_one_line(
     status, out, err = run_cli(capsys, "notebooks", "refresh", str(path))
     assert (status, out) == (1, "")
     assert err.strip().splitlines() == [
-        f"eulerlib notebooks: error: {path}: a cell raised ZeroDivisionError: division by zero"
+        f"eulerlib-course notebooks: error: {path}: "
+        "a cell raised ZeroDivisionError: division by zero"
     ]
     assert path.read_bytes() == before  # left as it was
 
@@ -432,7 +433,7 @@ def test_student_copies_refuse_the_course_folder_and_bad_flags(tmp_path: Path) -
         write_student_copies(tmp_path, tmp_path / "out", force="yes")  # type: ignore[arg-type]
 
 
-# --- without the notebooks extra ----------------------------------------------------------------
+# --- without the notebook tools -----------------------------------------------------------------
 
 
 @pytest.mark.parametrize(
@@ -443,7 +444,7 @@ def test_student_copies_refuse_the_course_folder_and_bad_flags(tmp_path: Path) -
         ("nbconvert", ("student", "--out", "out")),
     ],
 )
-def test_notebook_commands_name_the_extra_when_it_is_missing(
+def test_notebook_commands_name_what_to_install_when_a_tool_is_missing(
     hidden: str,
     action: tuple[str, ...],
     tmp_path: Path,
@@ -456,7 +457,7 @@ def test_notebook_commands_name_the_extra_when_it_is_missing(
     status, out, err = run_cli(capsys, "notebooks", *action)
     assert (status, out) == (1, "")
     assert err.splitlines() == [
-        f"eulerlib notebooks: error: eulerlib notebooks {action[0]} needs {hidden} "
-        '(the notebooks extra): pip install "eulerlib[notebooks]"'
+        f"eulerlib-course notebooks: error: eulerlib-course notebooks {action[0]} needs {hidden}, "
+        "a dependency of eulerlib-course: pip install -e ./course"
     ]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["notebooks"]

@@ -1,8 +1,9 @@
-"""The course website: built by ``eulerlib site build``, read in a real browser with no network.
+"""The course website: built by ``eulerlib-course site build``, read in a real browser with no
+network.
 
 Two groups of tests.
 
-* **Preparing the pages** (:mod:`eulerlib.course.site`): a notebook made ready for the web, the
+* **Preparing the pages** (:mod:`eulerlib_course.site`): a notebook made ready for the web, the
   table of contents, the README's JupyterLab command. They need the notebook tools only, so they
   run with the rest of the suite.
 * **The site itself.** The documented command builds it once for this module into a temporary
@@ -44,7 +45,7 @@ from urllib.parse import unquote, urljoin, urlsplit
 import nbformat
 import pytest
 
-from eulerlib.course.site import (
+from eulerlib_course.site import (
     build_site,
     course_pages,
     jupyterlab_command,
@@ -52,9 +53,9 @@ from eulerlib.course.site import (
     prepare_notebook,
     table_of_contents,
 )
-from eulerlib.course.student import student_copy
+from eulerlib_course.student import student_copy
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 README = (REPO / "README.md").read_text(encoding="utf-8")
 NOTEBOOKS = course_pages(REPO / "notebooks")
 NOTEBOOK_PAGES = [f"notebooks/{path.stem}.html" for path in NOTEBOOKS]
@@ -228,7 +229,7 @@ def test_the_site_is_not_built_over_another_folder_or_a_file(tmp_path: Path) -> 
 def test_the_site_command_names_its_extra(tmp_path: Path) -> None:
     code = (
         "import sys\nsys.modules['jupyter_book'] = None\n"
-        "from eulerlib.cli import main\n"
+        "from eulerlib_course.cli import main\n"
         f"raise SystemExit(main(['site', 'build', '--out', {str(tmp_path / 'site')!r}]))\n"
     )
     result = subprocess.run(
@@ -236,8 +237,8 @@ def test_the_site_command_names_its_extra(tmp_path: Path) -> None:
     )
     assert result.returncode == 1
     assert result.stderr.splitlines() == [
-        "eulerlib site: error: eulerlib site build needs jupyter_book (the site extra): "
-        'pip install "eulerlib[site]"'
+        "eulerlib-course site: error: eulerlib-course site build needs jupyter_book "
+        '(the site extra of eulerlib-course): pip install -e "./course[site]"'
     ]
     assert not (tmp_path / "site").exists()
 
@@ -257,7 +258,7 @@ def missing_prerequisite() -> str | None:
     """Why the site cannot be built and read here, or None."""
     for module in ("jupyter_book", "sphinx-mathjax-offline", "playwright"):
         if importlib.util.find_spec(module) is None:
-            return f'the site extra is not installed (no {module}): pip install -e ".[site]"'
+            return f'the site extra is not installed (no {module}): pip install -e "./course[site]"'
     if chromium_executable() is None:
         return "no Chromium: install Debian's chromium package, or name one in EULERLIB_CHROMIUM"
     return None
@@ -282,7 +283,7 @@ def site(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Site]:
         pytest.skip(reason)
     folder = tmp_path_factory.mktemp("site") / "html"
     result = subprocess.run(
-        [sys.executable, "-m", "eulerlib", "site", "build", "--out", str(folder)],
+        [sys.executable, "-m", "eulerlib_course", "site", "build", "--out", str(folder)],
         capture_output=True,
         text=True,
         cwd=REPO,

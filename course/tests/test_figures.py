@@ -1,4 +1,4 @@
-"""Tests of ``eulerlib figures``: the committed figures are what the command draws.
+"""Tests of ``eulerlib-course figures``: the committed figures are what the command draws.
 
 How closely a fresh drawing can match ``figures/`` depends on the matplotlib that draws it, so
 the comparison comes in three strengths:
@@ -37,12 +37,11 @@ from matplotlib.testing.compare import calculate_rms, compare_images
 from numpy.typing import NDArray
 from PIL import Image, ImageDraw, ImageSequence
 
-from eulerlib import cli
-from eulerlib.course import commands, figures
 from eulerlib.euler import euler_to_matrix
 from eulerlib.plotting import plot_frames
+from eulerlib_course import cli, commands, figures
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 COMMITTED = ROOT / "figures"
 
 #: Largest RMS pixel difference (0–255 scale) accepted with the same matplotlib feature release.
@@ -78,7 +77,7 @@ PNG_NAMES = [f"{topic}.png" for topic in NOTEBOOK_TOPICS]
 
 @dataclass
 class CommandRun:
-    """``eulerlib figures --out OUT`` run once: its exit status, what it printed, and what
+    """``eulerlib-course figures --out OUT`` run once: its exit status, what it printed, and what
     ``write_figures`` returned to it."""
 
     out: Path
@@ -278,7 +277,7 @@ def test_the_pixel_comparison_sees_a_small_mark(tmp_path: Path) -> None:
 def test_committed_figures_are_exactly_what_the_command_writes(fresh: Path) -> None:
     for name in listing(COMMITTED):
         assert (fresh / name).read_bytes() == (COMMITTED / name).read_bytes(), (
-            f"figures/{name} differs from a fresh run: regenerate with `eulerlib figures`"
+            f"figures/{name} differs from a fresh run: regenerate with `eulerlib-course figures`"
         )
 
 

@@ -14,7 +14,7 @@ source.
   its pages (:func:`table_of_contents`);
 * it prepares every notebook for reading on the web (:func:`prepare_notebook`): a box under
   the title offers the notebook for download, as the teacher's edition (the committed file)
-  and as a student copy (:mod:`eulerlib.course.student`), and shows the README's command that
+  and as a student copy (:mod:`eulerlib_course.student`), and shows the README's command that
   opens the course in JupyterLab; worked solutions are folded behind a "Show the worked
   solution" button; a widget shows the picture stored next to it, with a sentence on running
   it live, and the widgets' saved state is dropped so that no widget JavaScript is fetched; an
@@ -25,7 +25,7 @@ source.
 Nothing on the pages asks for a file from another host; ``tests/test_site.py`` opens every
 page in a headless Chromium to check it. This module needs the ``site`` extra (Jupyter Book 1,
 MathJax) besides the ``notebooks`` extra's notebook tools; the command line is
-``eulerlib site build [--out DIR]`` (:mod:`eulerlib.course.commands`).
+``eulerlib-course site build [--out DIR]`` (:mod:`eulerlib_course.commands`).
 """
 
 from __future__ import annotations
@@ -44,8 +44,8 @@ from typing import Any
 
 import nbformat
 
-from eulerlib.course.notebook_form import read_notebook, write_notebook
-from eulerlib.course.student import SOLUTION_TAG, student_copy
+from eulerlib_course.notebook_form import read_notebook, write_notebook
+from eulerlib_course.student import SOLUTION_TAG, student_copy
 
 __all__ = [
     "SiteBuild",
@@ -58,7 +58,7 @@ __all__ = [
 
 #: The folder of the book's configuration and landing page, relative to the repository.
 SITE_FOLDER = Path("site")
-#: Where ``eulerlib site build`` writes the site unless told otherwise (git-ignored).
+#: Where ``eulerlib-course site build`` writes the site unless told otherwise (git-ignored).
 DEFAULT_OUT = Path("build") / "site"
 
 #: Extensions of Jupyter Book's default set that the site does without (see :func:`build_site`).

@@ -19,7 +19,7 @@ Pillow pinned in ``.ci/constraints.txt``; elsewhere the tests compare the pictur
 small tolerance.
 
 This module needs matplotlib (the ``plot`` extra). The command line is
-``eulerlib figures [--out DIR]`` (:mod:`eulerlib.course.commands`).
+``eulerlib-course figures [--out DIR]`` (:mod:`eulerlib_course.commands`).
 """
 
 from __future__ import annotations

@@ -2,9 +2,9 @@
 
 Two parts.
 
-* **The edition itself** (fast; nbformat only): ``eulerlib notebooks nbgrader`` on a small course
-  in the course's exercise form, built here — its layout, nbgrader's cell metadata, the hidden
-  tests, the refusals (an exercise not in the course's form, an earlier edition without
+* **The edition itself** (fast; nbformat only): ``eulerlib-course notebooks nbgrader`` on a small
+  course in the course's exercise form, built here — its layout, nbgrader's cell metadata, the
+  hidden tests, the refusals (an exercise not in the course's form, an earlier edition without
   ``--force``, nbgrader not installed).
 * **nbgrader's own run** (slow, so it is its own step of ``.ci/run`` and runs only when
   ``EULERLIB_NBGRADER=1``): the edition is turned into the students' version by
@@ -33,18 +33,18 @@ from typing import Any
 import nbformat
 import pytest
 
-from eulerlib import cli
-from eulerlib.course.exercises import Exercise, exercises
-from eulerlib.course.exercises.feedback import NOT_YET
-from eulerlib.course.nbgrader_edition import (
+from eulerlib_course import cli
+from eulerlib_course.exercises import Exercise, exercises
+from eulerlib_course.exercises.feedback import NOT_YET
+from eulerlib_course.nbgrader_edition import (
     CODE_STUB,
     CONFIG_NAME,
     nbgrader_edition,
     write_nbgrader_edition,
 )
-from eulerlib.course.student import student_copy
+from eulerlib_course.student import student_copy
 
-REPO = Path(__file__).resolve().parents[1]
+REPO = Path(__file__).resolve().parents[2]
 COURSE = REPO / "notebooks"
 KEY = exercises()
 
@@ -59,7 +59,8 @@ RUN_NBGRADER = os.environ.get("EULERLIB_NBGRADER") == "1"
 needs_nbgrader_run = pytest.mark.skipif(
     not RUN_NBGRADER,
     reason="nbgrader's generate_assignment, autograde and export take a minute or more: they run "
-    "as their own step of .ci/run (EULERLIB_NBGRADER=1 python -m pytest tests/test_nbgrader.py)",
+    "as their own step of .ci/run "
+    "(EULERLIB_NBGRADER=1 python -m pytest course/tests/test_nbgrader.py)",
 )
 
 CHECK = re.compile(r'check\("(\d\d\.\d)", (answer_\d)\)')
@@ -100,7 +101,7 @@ def small_notebook() -> Any:
         ),
         code(
             "%matplotlib inline\nimport numpy as np\n\nfrom eulerlib import matrix_to_euler\n"
-            "from eulerlib.course import check, given"
+            "from eulerlib_course import check, given"
         ),
         md("At [gimbal lock](glossary.ipynb#gimbal-lock) the pitch is ±90°."),
         code('samples = np.loadtxt("data/samples.csv", delimiter=",")\nprint(samples.shape)'),
@@ -380,8 +381,8 @@ def test_an_earlier_edition_is_overwritten_only_with_force(
     status, stdout, err = run_cli(capsys, *arguments)
     assert (status, stdout) == (1, "")
     assert err.splitlines() == [
-        "eulerlib notebooks: error: 4 of the 4 files of the nbgrader edition already exist in "
-        f"{out} (first: nbgrader_config.py); pass --force to overwrite them"
+        "eulerlib-course notebooks: error: 4 of the 4 files of the nbgrader edition already "
+        f"exist in {out} (first: nbgrader_config.py); pass --force to overwrite them"
     ]
     assert notebook.read_text() == "a teacher's change\n"
     assert run_cli(capsys, *arguments, "--force")[0] == 0
@@ -428,8 +429,8 @@ def test_command_names_the_teach_extra_when_a_tool_is_missing(
     )
     assert (status, stdout) == (1, "")
     assert err.splitlines() == [
-        f"eulerlib notebooks: error: eulerlib notebooks nbgrader needs {hidden} "
-        '(the teach extra): pip install "eulerlib[teach]"'
+        f"eulerlib-course notebooks: error: eulerlib-course notebooks nbgrader needs {hidden} "
+        '(the teach extra of eulerlib-course): pip install -e "./course[teach]"'
     ]
     assert not out.exists()
 

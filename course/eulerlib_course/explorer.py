@@ -3,9 +3,10 @@
 :func:`explorer_state` is the explorer's logic as a plain function, testable without a browser:
 the matrix of three angles in a convention, the angles :func:`eulerlib.matrix_to_euler` gives
 back with that convention's own lock policy, and the distance to gimbal lock. At lock the
-words come from the :class:`eulerlib.GimbalLockWarning` the conversion emits (which angle was
-set to 0, which one carries the turn, which combination is still defined), so the explorer
-says exactly what the library did.
+words come from a :class:`eulerlib.GimbalLockWarning` built from :func:`eulerlib.gimbal_lock_status`
+and the :class:`eulerlib.Convention` (which angle was set to 0, which one carries the turn,
+which combination is still defined), the facts the conversion's own warning carries, so the
+explorer says exactly what the library did.
 
 :func:`explorer` wires the logic to ipywidgets and returns an :class:`Explorer`. With a live
 kernel, JupyterLab shows its widgets. A stored notebook opened without a kernel, or rendered as
@@ -20,7 +21,6 @@ from __future__ import annotations
 import base64
 import html
 import io
-import warnings
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
@@ -28,7 +28,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from eulerlib.conventions import CONVENTIONS, Convention, get_convention
 from eulerlib.gimbal_lock import GimbalLockWarning
-from eulerlib.plotting._base import add_3d_axes, convention_label, style_axes
+from eulerlib.plotting._base import add_3d_axes, style_axes
 from eulerlib.plotting._checks import angle_triple
 from eulerlib.plotting.frames import frame_artists
 from eulerlib.sequences import ALL_SEQUENCES
@@ -71,8 +71,8 @@ class ExplorerState(NamedTuple):
         Distance of the middle angle from gimbal lock, degrees
         (:func:`eulerlib.gimbal_lock_status`).
     lock : GimbalLockWarning or None
-        At lock, the warning the conversion emitted, with its facts (``zeroed``, ``carrier``,
-        ``combinations``); None otherwise.
+        At lock, the warning the conversion would emit, with its facts (``zeroed``,
+        ``carrier``, ``combinations``); None otherwise.
     text : str
         All of it in words, as the explorer prints it.
 
@@ -152,16 +152,14 @@ def _state(values: NDArray[np.float64], convention: Convention) -> ExplorerState
     from eulerlib.gimbal_lock import gimbal_lock_status
 
     matrix = euler_to_matrix(values, convention, degrees=True)
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", GimbalLockWarning)
-        recovered = matrix_to_euler(matrix, convention, degrees=True)
+    # no warning is caught (that would swap process-wide state); the facts are read once
+    recovered = matrix_to_euler(matrix, convention, degrees=True, warn=False)
+    status = gimbal_lock_status(matrix, convention, degrees=True)
     lock = None
-    for record in caught:
-        if isinstance(record.message, GimbalLockWarning):
-            lock = record.message
-        else:  # not ours to swallow
-            warnings.warn_explicit(record.message, record.category, record.filename, record.lineno)
-    distance = float(gimbal_lock_status(matrix, convention, degrees=True).distance)
+    if status.locked:
+        pole = convention.pole(np.radians(recovered[1]))
+        lock = GimbalLockWarning(convention, 1, 1, (pole,))
+    distance = float(status.distance)
     text = _state_text(convention, values, matrix, recovered, distance, lock)
     return ExplorerState(
         convention, values, matrix, recovered, lock is not None, distance, lock, text
@@ -191,7 +189,7 @@ def _state_text(
         np.round(matrix, 4) + 0.0, separator=" ", formatter={"float_kind": lambda v: f"{v: .4f}"}
     )
     lines = [
-        f"{convention_label(convention)}: {listing(values)}",
+        f"{convention.label}: {listing(values)}",
         f"R =\n{matrix_text}",
         f"recovered: {listing(recovered)}",
         f"distance to gimbal lock: {_degrees(distance)}" + (" (LOCKED)" if lock else ""),
@@ -215,7 +213,7 @@ def _draw_state(ax: Any, state: ExplorerState) -> None:
     """The reference frame (dashed) and the rotated frame of a state, on a cleared 3D axes."""
     ax.cla()
     values = ", ".join(_degrees(angle) for angle in state.angles)
-    style_axes(ax, 1.2, f"{convention_label(state.convention)} ({values})")
+    style_axes(ax, 1.2, f"{state.convention.label} ({values})")
     frame_artists(ax, np.eye(3), linestyle="--", alpha=0.45, linewidth=1.5)
     frame_artists(ax, state.matrix, label_suffix="'")
 
@@ -224,9 +222,9 @@ def _selector_options(convention: Convention) -> list[tuple[str, Convention]]:
     """The presets, then the 24 sequences; a convention made by the caller comes first."""
     presets = [CONVENTIONS[name] for name in ("rose", "baker", "ros")]
     sequences = [get_convention(seq) for seq in ALL_SEQUENCES]
-    options = [(convention_label(choice), choice) for choice in presets + sequences]
+    options = [(choice.label, choice) for choice in presets + sequences]
     if convention not in presets + sequences:
-        options.insert(0, (convention_label(convention), convention))
+        options.insert(0, (convention.label, convention))
     return options
 
 
@@ -270,7 +268,8 @@ class Explorer:
             import ipywidgets as widgets
         except ImportError:  # pragma: no cover - depends on the installation
             raise ImportError(
-                "the explorer needs ipywidgets: install eulerlib with the notebooks extra"
+                "the explorer needs ipywidgets, a dependency of eulerlib-course: "
+                "pip install -e ./course"
             ) from None
         from matplotlib.figure import Figure
 
@@ -354,7 +353,7 @@ class Explorer:
 
     def __repr__(self) -> str:
         values = ", ".join(_degrees(angle) for angle in self.angles)
-        return f"<Explorer {convention_label(self.convention)}: {values}>"
+        return f"<Explorer {self.convention.label}: {values}>"
 
 
 def explorer(seq: str | Convention = "ZYX") -> Explorer:

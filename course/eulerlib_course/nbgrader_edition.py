@@ -22,7 +22,7 @@ question's data and ``answer_k = ...``), the ``solution`` cell (the worked answe
 * an **autograder test** cell worth :data:`POINTS` ``[level]`` points: the check cell as it is,
   which the student runs for feedback, followed by a hidden test, between ``### BEGIN HIDDEN
   TESTS`` and ``### END HIDDEN TESTS``, that asks the answer key itself
-  (:func:`eulerlib.course.exercises.check`, imported afresh) and fails unless the verdict is
+  (:func:`eulerlib_course.exercises.check`, imported afresh) and fails unless the verdict is
   ``correct``. The assertion's message is the feedback, so a student's graded notebook says why
   an answer lost its points. The reference and the tolerance stay in the key: the same judge
   decides the self-check and the grade, and accepts every answer that is equally right.
@@ -55,8 +55,8 @@ import nbformat
 from nbconvert.preprocessors import ClearOutputPreprocessor
 
 from eulerlib._validation import check_flag
-from eulerlib.course.exercises import exercises
-from eulerlib.course.notebook_form import normalize_notebook, read_notebook, write_notebook
+from eulerlib_course.exercises import exercises
+from eulerlib_course.notebook_form import normalize_notebook, read_notebook, write_notebook
 
 __all__ = [
     "CODE_STUB",
@@ -136,7 +136,7 @@ def _test_cell(check: Any, exercise_id: str, answer: str, points: int) -> Any:
     hidden = [
         BEGIN_HIDDEN_TESTS,
         "# graded by the answer key itself, whatever the notebook may have redefined",
-        "import eulerlib.course.exercises as _answer_key",
+        "import eulerlib_course.exercises as _answer_key",
         "",
         f'_feedback = _answer_key.check("{exercise_id}", {answer})',
         'assert _feedback.status == "correct", str(_feedback)',
@@ -191,7 +191,7 @@ def nbgrader_notebook(notebook: Any, name: str) -> Any:
     >>> import nbformat
     >>> new = nbformat.v4.new_code_cell
     >>> course = nbformat.v4.new_notebook(cells=[
-    ...     new("from eulerlib.course import check, given"),
+    ...     new("from eulerlib_course import check, given"),
     ...     new('R_ex = given("05.1")\\nanswer_1 = ...', metadata={"tags": ["exercise"]}),
     ...     new("answer_1 = [-100, 35, 160]", metadata={"tags": ["solution"]}),
     ...     new('check("05.1", answer_1)', metadata={"tags": ["check"]}),
@@ -269,7 +269,8 @@ def nbgrader_config() -> str:
     has filled in the ``...`` kept above the solution.
     """
     return (
-        "# nbgrader settings of the eulerlib course, as written by `eulerlib notebooks nbgrader`.\n"
+        "# nbgrader settings of the eulerlib course, as written by\n"
+        "# `eulerlib-course notebooks nbgrader`.\n"
         "# Run nbgrader's commands in this folder, or copy these settings into the\n"
         "# nbgrader_config.py of your course.\n"
         "c = get_config()  # noqa: F821 (defined by nbgrader when it reads this file)\n"

@@ -1,0 +1,75 @@
+"""The bodies of the Euler-angle conversions, for checked arguments, shared by every path.
+
+:func:`eulerlib.euler_to_matrix` and :func:`eulerlib.matrix_to_euler` check their arguments
+and call these; the named-angle functions and the quaternion conversions call them too, so
+that the lock policy and its warning are applied in one place, for all of them.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+
+import numpy as np
+from numpy.typing import NDArray
+
+from eulerlib._blocks import block_slices
+from eulerlib._conventions import Convention
+from eulerlib._euler_kernels import fill_matrices, intrinsic_angles
+from eulerlib._lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
+from eulerlib._validation import RotationCheck, rotation_entry_blocks
+
+
+def angles_to_matrices(
+    values: NDArray[np.float64], convention: Convention, degrees: bool
+) -> NDArray[np.float64]:
+    """Body of :func:`euler_to_matrix` for checked angles of shape ``(..., 3)``."""
+    parsed = convention.parsed
+    flat = convention.to_intrinsic(values.reshape(-1, 3))
+    R = np.empty((flat.shape[0], 3, 3))
+    for block in block_slices(flat.shape[0]):
+        fill_matrices(R[block], flat[block], parsed, degrees)
+    return R.reshape(*values.shape[:-1], 3, 3)
+
+
+def matrices_to_angles(
+    matrices: NDArray[np.float64],
+    convention: Convention,
+    check: RotationCheck,
+    degrees: bool,
+    warn: bool,
+) -> NDArray[np.float64]:
+    """Body of :func:`matrix_to_euler` for a stack of matrices ``(..., 3, 3)`` to be checked."""
+    blocks = rotation_entry_blocks(matrices, "R", check)
+    return entry_blocks_to_angles(blocks, matrices.shape[:-2], convention, degrees, warn)
+
+
+def entry_blocks_to_angles(
+    blocks: Iterable[tuple[slice, NDArray[np.float64]]],
+    lead: tuple[int, ...],
+    convention: Convention,
+    degrees: bool,
+    warn: bool,
+) -> NDArray[np.float64]:
+    """Euler angles, shape ``(*lead, 3)``, of rotations given block by block.
+
+    ``blocks`` yields ``(block, entries)`` as :func:`eulerlib._validation.rotation_entry_blocks`
+    does, for rotation matrices or for anything turned into their entries block by block (such
+    as quaternions); the lock policy and the warning are applied here, for both.
+    """
+    parsed = convention.parsed
+    count = math.prod(lead)
+    angles, locked = np.empty((count, 3)), np.empty(count, dtype=bool)
+    # the kernels give the intrinsic order; write it through a view of the result in that
+    # order (reversed for an extrinsic sequence), so the result is in argument order in place
+    intrinsic = convention.to_intrinsic(angles)
+    zero_first = convention.zeroes_intrinsic_first
+    for block, entries in blocks:
+        intrinsic[block], locked[block] = intrinsic_angles(
+            entries, parsed, zero_first, GIMBAL_LOCK_TOLERANCE
+        )
+    if warn:
+        warn_if_locked(convention, locked, angles[:, 1])  # the middle angle either way
+    if degrees:
+        np.degrees(angles, out=angles)
+    return angles.reshape(*lead, 3)
