@@ -19,7 +19,7 @@ Pillow pinned in ``.ci/constraints.txt``; elsewhere the tests compare the pictur
 small tolerance.
 
 This module needs matplotlib (the ``plot`` extra). The command line is
-``eulerlib-course figures [--out DIR]`` (:mod:`eulerlib_course.commands`).
+``eulerlib-course figures [--out DIR] [--force]`` (:mod:`eulerlib_course.commands`).
 """
 
 from __future__ import annotations
@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING, Any, cast
 import numpy as np
 from numpy.typing import NDArray
 
+from eulerlib._validation import check_flag
 from eulerlib.angular_velocity import angular_velocity_to_euler_rates
 from eulerlib.axis_angle import (
     angle_between,
@@ -427,7 +428,7 @@ def _deterministic_style() -> dict[Any, Any]:
     return {"svg.hashsalt": SVG_HASHSALT, "svg.fonttype": "path", "path.simplify": True}
 
 
-def write_figures(out: str | Path = "figures") -> list[Path]:
+def write_figures(out: str | Path = "figures", *, force: bool = False) -> list[Path]:
     """Draw every figure of the course into the folder ``out`` and return the paths written.
 
     matplotlib is switched to the Agg backend first (nothing is shown on screen).
@@ -435,8 +436,19 @@ def write_figures(out: str | Path = "figures") -> list[Path]:
     Parameters
     ----------
     out : str or Path, optional
-        Destination folder, created if needed. Files of the same names are overwritten;
-        other files are left alone.
+        Destination folder, created if needed. Other files in it are left alone.
+    force : bool, optional
+        Replace files of the same names already in ``out``. Without it nothing is drawn
+        when any of them exists.
+
+    Raises
+    ------
+    ValueError
+        If ``out`` is a file.
+    TypeError
+        If ``force`` is not True or False.
+    FileExistsError
+        If some of the files exist already and ``force`` is not set; the message says how many.
 
     Returns
     -------
@@ -456,9 +468,16 @@ def write_figures(out: str | Path = "figures") -> list[Path]:
     import matplotlib.pyplot as plt
     from matplotlib.animation import PillowWriter
 
+    force = check_flag(force, "force")
     folder = Path(out)
     if folder.exists() and not folder.is_dir():
         raise ValueError(f"out must be a folder, but {folder} is a file")
+    existing = [name for name in FIGURE_NAMES if (folder / name).exists()]
+    if existing and not force:
+        raise FileExistsError(
+            f"{len(existing)} of the {len(FIGURE_NAMES)} figures already exist in {folder} "
+            f"(first: {existing[0]})"
+        )
     folder.mkdir(parents=True, exist_ok=True)
     written = []
     with plt.style.context("default"), matplotlib.rc_context(_deterministic_style()):
