@@ -12,8 +12,9 @@
 * ``eulerlib-course notebooks refresh [NOTEBOOK ...]`` (for maintainers) re-executes notebooks
   and stores them in normal form (:mod:`eulerlib_course.notebook_form`); all of ``notebooks/`` by
   default.
-* ``eulerlib-course figures [--out DIR]`` (for maintainers) redraws every figure of the course
-  (:mod:`eulerlib_course.figures`) into ``figures/`` by default.
+* ``eulerlib-course figures [--out DIR] [--force]`` (for maintainers) redraws every figure of
+  the course (:mod:`eulerlib_course.figures`) into ``figures/`` by default, replacing pictures
+  already there only with ``--force``.
 * ``eulerlib-course site build [--out DIR]`` (for teachers and maintainers) builds the course
   website from the stored notebooks (:mod:`eulerlib_course.site`) into ``build/site/`` by default.
 
@@ -57,6 +58,21 @@ SITE_TOOLS = ("jupyter_book", "sphinx-mathjax-offline", "nbformat", "nbconvert")
 GRADING_TOOLS = ("nbformat", "nbconvert", "nbgrader")
 
 
+def output_folder(text: str) -> Path:
+    """The ``--out`` of every course command: a folder, or a name for one still to be made.
+
+    An empty name is refused (it would mean the current folder), and so is an existing file.
+    What is already in the folder is the command's own business: none of them replaces a file
+    there unless ``--force`` is given.
+    """
+    if not text.strip():
+        raise argparse.ArgumentTypeError("is empty: name a folder")
+    folder = Path(text)
+    if folder.exists() and not folder.is_dir():
+        raise argparse.ArgumentTypeError(f"{text} is a file, not a folder")
+    return folder
+
+
 def configure_notebooks(parser: argparse.ArgumentParser) -> None:
     """Add the ``student`` and ``refresh`` actions to the ``notebooks`` sub-parser."""
     actions = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
@@ -66,7 +82,9 @@ def configure_notebooks(parser: argparse.ArgumentParser) -> None:
         description="Write a student copy of every course notebook, without the worked "
         "solutions and outputs.",
     )
-    student.add_argument("--out", type=Path, required=True, help="folder for the student copies")
+    student.add_argument(
+        "--out", type=output_folder, required=True, help="folder for the student copies"
+    )
     student.add_argument(
         "--src", type=Path, help="folder of the course notebooks (default: notebooks/)"
     )
@@ -81,7 +99,7 @@ def configure_notebooks(parser: argparse.ArgumentParser) -> None:
         "test that asks the course's answer key.",
     )
     grading.add_argument(
-        "--out", type=Path, required=True, help="the nbgrader course folder to write into"
+        "--out", type=output_folder, required=True, help="the nbgrader course folder to write into"
     )
     grading.add_argument(
         "--src", type=Path, help="folder of the course notebooks (default: notebooks/)"
@@ -103,7 +121,12 @@ def configure_notebooks(parser: argparse.ArgumentParser) -> None:
 
 def configure_figures(parser: argparse.ArgumentParser) -> None:
     """Add ``--out`` to the ``figures`` sub-parser."""
-    parser.add_argument("--out", type=Path, help="folder for the figures (default: figures/)")
+    parser.add_argument(
+        "--out", type=output_folder, help="folder for the figures (default: figures/)"
+    )
+    parser.add_argument(
+        "--force", action="store_true", help="replace pictures of the same names already there"
+    )
     parser.set_defaults(run=run_figures)
 
 
@@ -180,7 +203,10 @@ def run_figures(args: argparse.Namespace) -> int:
     from eulerlib_course.figures import write_figures
 
     out = args.out if args.out is not None else _course_folder(FIGURE_FOLDER, "pass --out DIR")
-    written = write_figures(out)
+    try:
+        written = write_figures(out, force=args.force)
+    except FileExistsError as error:
+        raise ValueError(f"{error}; pass --force to replace them") from None
     print(f"wrote {len(written)} figures to {out}")
     return 0
 

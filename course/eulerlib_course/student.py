@@ -93,8 +93,8 @@ def write_student_copies(source: str | Path, out: str | Path, *, force: bool = F
     out : str or Path
         The folder for the copies, created if needed.
     force : bool, optional
-        Overwrite copies that already exist in ``out``. Without it nothing is written when any
-        of them exists.
+        Overwrite copies, and copies of the recorded data, that already exist in ``out``.
+        Without it nothing is written when any of them exists.
 
     The folder ``data/`` next to the notebooks (recorded data that notebooks read) is copied
     into ``out`` as it is, so that the copies run there too.
@@ -120,11 +120,11 @@ def write_student_copies(source: str | Path, out: str | Path, *, force: bool = F
         for path in sorted((Path(source) / DATA_FOLDER).rglob("*"))
         if path.is_file()
     ]
-    existing = [copy_path for _, copy_path in pairs if copy_path.exists()]
+    existing = [copy_path for _, copy_path in pairs + data if copy_path.exists()]
     if existing and not force:
         raise FileExistsError(
-            f"{len(existing)} of the {len(pairs)} student copies already exist in {out} "
-            f"(first: {existing[0].name})"
+            f"{len(existing)} of the {len(pairs) + len(data)} files of the student copies "
+            f"already exist in {out} (first: {existing[0].relative_to(Path(out)).as_posix()})"
         )
     Path(out).mkdir(parents=True, exist_ok=True)
     for path, copy_path in pairs:

@@ -351,7 +351,9 @@ def test_student_command_overwrites_only_with_force(
         (out / name).write_text("a learner's work\n")
     arguments = ("notebooks", "student", "--src", str(source), "--out", str(out))
     status, stdout, err = run_cli(capsys, *arguments)
-    assert_one_line_failure(status, err, "2 of the 3 student copies already exist", "--force")
+    assert_one_line_failure(
+        status, err, "2 of the 3 files of the student copies already exist", "--force"
+    )
     assert stdout == ""
     assert sorted(p.name for p in out.iterdir()) == ["01_a.ipynb", "03_c.ipynb", "notes.txt"]
     assert all(
@@ -361,6 +363,46 @@ def test_student_command_overwrites_only_with_force(
     assert (status, stdout) == (0, f"wrote 3 student copies to {out}\n")
     assert (out / "notes.txt").read_text() == "a learner's work\n"
     assert read(out / "01_a.ipynb") == student_copy(tiny_notebook())
+
+
+def test_student_command_keeps_data_already_in_out_without_force(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # No notebook copy there yet, but a data file of the same name: nothing is replaced.
+    source, out = tmp_path / "course", tmp_path / "student"
+    (source / "data").mkdir(parents=True)
+    (out / "data").mkdir(parents=True)
+    nbformat.write(tiny_notebook(), str(source / "01_tiny.ipynb"))
+    (source / "data" / "samples.csv").write_bytes(b"t,x\r\n0,1\r\n")
+    (out / "data" / "samples.csv").write_bytes(b"a learner's own recording")
+    arguments = ("notebooks", "student", "--src", str(source), "--out", str(out))
+    status, _, err = run_cli(capsys, *arguments)
+    assert_one_line_failure(status, err, "data/samples.csv", "--force")
+    assert (out / "data" / "samples.csv").read_bytes() == b"a learner's own recording"
+    assert not (out / "01_tiny.ipynb").exists()
+    assert run_cli(capsys, *arguments, "--force")[0] == 0
+    assert (out / "data" / "samples.csv").read_bytes() == b"t,x\r\n0,1\r\n"
+
+
+@pytest.mark.parametrize("action", ["student", "nbgrader"])
+@pytest.mark.parametrize("force", [[], ["--force"]])
+def test_student_and_nbgrader_refuse_an_empty_or_file_out(
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+    action: str,
+    force: list[str],
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "a_file").write_text("kept")
+    for out, words in (("", "is empty"), ("a_file", "a_file is a file, not a folder")):
+        with pytest.raises(SystemExit) as exit_:
+            run_cli(capsys, "notebooks", action, "--src", str(NOTEBOOK_DIR), "--out", out, *force)
+        assert exit_.value.code == 2
+        error = capsys.readouterr().err.splitlines()[-1]
+        assert words in error and "--force" not in error
+    assert sorted(path.name for path in tmp_path.iterdir()) == ["a_file"]
+    assert (tmp_path / "a_file").read_text() == "kept"
 
 
 def test_student_command_without_notebook_folder_fails_in_one_line(

@@ -93,8 +93,8 @@ def command_run(tmp_path_factory: pytest.TempPathFactory) -> CommandRun:
     returned: list[list[Path]] = []
     draw = figures.write_figures
 
-    def recording_write_figures(folder: str | Path) -> list[Path]:
-        returned.append(draw(folder))
+    def recording_write_figures(folder: str | Path, *, force: bool = False) -> list[Path]:
+        returned.append(draw(folder, force=force))
         return returned[-1]
 
     with pytest.MonkeyPatch.context() as patch, contextlib.redirect_stdout(io.StringIO()) as text:
@@ -322,8 +322,56 @@ def test_without_a_figures_folder_the_command_fails_in_one_line(
     assert list(tmp_path.iterdir()) == []
 
 
-def test_out_must_not_be_a_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+@pytest.mark.parametrize("force", [[], ["--force"]])
+def test_out_must_not_be_a_file(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], force: list[str]
+) -> None:
     target = tmp_path / "a_file"
     target.write_text("not a folder")
-    assert cli.main(["figures", "--out", str(target)]) == 1
-    assert "is a file" in capsys.readouterr().err
+    with pytest.raises(SystemExit) as exit_:
+        cli.main(["figures", "--out", str(target), *force])
+    assert exit_.value.code == 2
+    error = capsys.readouterr().err.splitlines()[-1]
+    assert "a_file is a file, not a folder" in error
+    assert "--force" not in error  # it would not help
+    assert target.read_text() == "not a folder"
+
+
+def test_out_must_not_be_empty(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SystemExit) as exit_:
+        cli.main(["figures", "--out", ""])
+    assert exit_.value.code == 2
+    assert "--out: is empty" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_pictures_already_there_are_replaced_only_with_force(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # Two of the figures, as if drawn before; nothing is drawn while they are in the way.
+    monkeypatch.setattr(figures, "THUMBNAILS", dict(list(figures.THUMBNAILS.items())[:1]))
+    monkeypatch.setattr(figures, "GIF_FRAMES", 2)
+    mine = tmp_path / figures.FIGURE_NAMES[0]
+    mine.write_bytes(b"a teacher's own picture")
+    (tmp_path / "notes.txt").write_text("kept")
+    assert cli.main(["figures", "--out", str(tmp_path)]) == 1
+    lines = capsys.readouterr().err.splitlines()
+    assert (
+        len(lines) == 1
+        and "1 of the" in lines[0]
+        and lines[0].endswith("pass --force to replace them")
+    )
+    assert mine.read_bytes() == b"a teacher's own picture"
+    assert sorted(path.name for path in tmp_path.iterdir()) == sorted([mine.name, "notes.txt"])
+    assert cli.main(["figures", "--out", str(tmp_path), "--force"]) == 0
+    assert mine.read_bytes().startswith(b"\x89PNG")
+    assert (tmp_path / "notes.txt").read_text() == "kept"
+
+
+def test_write_figures_refuses_a_force_that_is_not_a_flag(tmp_path: Path) -> None:
+    with pytest.raises(TypeError, match="force"):
+        figures.write_figures(tmp_path, force="yes")  # type: ignore[arg-type]
+    assert list(tmp_path.iterdir()) == []
