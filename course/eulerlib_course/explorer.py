@@ -26,11 +26,10 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib._validation import as_vectors
 from eulerlib.conventions import CONVENTIONS, Convention, get_convention
 from eulerlib.gimbal_lock import GimbalLockWarning
-from eulerlib.plotting._base import add_3d_axes, style_axes
-from eulerlib.plotting._checks import angle_triple
-from eulerlib.plotting.frames import frame_artists
+from eulerlib.plotting import draw_frame, new_3d_axes
 from eulerlib.sequences import ALL_SEQUENCES
 
 if TYPE_CHECKING:
@@ -142,7 +141,9 @@ def explorer_state(angles: ArrayLike, seq: str | Convention = "ZYX") -> Explorer
     >>> explorer_state([40, 90, 10], "baker").recovered    # Baker sets bank to 0
     array([50., 90.,  0.])
     """
-    values = angle_triple(angles).copy()  # the state keeps its own angles
+    values = as_vectors(angles, "angles").copy()  # the state keeps its own angles
+    if values.shape != (3,):
+        raise ValueError(f"angles must be three numbers, got shape {values.shape}")
     return _state(values, get_convention(seq))
 
 
@@ -209,13 +210,13 @@ def _png(fig: Figure) -> bytes:
     return buffer.getvalue()
 
 
-def _draw_state(ax: Any, state: ExplorerState) -> None:
-    """The reference frame (dashed) and the rotated frame of a state, on a cleared 3D axes."""
-    ax.cla()
+def _draw_state(fig: Any, position: tuple[int, int, int], state: ExplorerState) -> Any:
+    """A new 3D axes of ``fig`` with the reference frame (dashed) and the frame of a state."""
     values = ", ".join(_degrees(angle) for angle in state.angles)
-    style_axes(ax, 1.2, f"{state.convention.label} ({values})")
-    frame_artists(ax, np.eye(3), linestyle="--", alpha=0.45, linewidth=1.5)
-    frame_artists(ax, state.matrix, label_suffix="'")
+    ax = new_3d_axes(fig, position, limit=1.2, title=f"{state.convention.label} ({values})")
+    draw_frame(ax, linestyle="--", alpha=0.45, linewidth=1.5)
+    draw_frame(ax, state.matrix, label_suffix="'", validate=False)
+    return ax
 
 
 def _selector_options(convention: Convention) -> list[tuple[str, Convention]]:
@@ -294,7 +295,6 @@ class Explorer:
             [widgets.HBox([*self.sliders, self.selector]), widgets.HBox([self.image, self.text])]
         )
         self._figure = Figure(figsize=(4, 4))  # not managed by pyplot: nothing to close
-        self._ax = add_3d_axes(self._figure, (1, 1, 1), 1.2, None)
         for slider in self.sliders:
             slider.observe(self._update, names="value")
         self.selector.observe(self._update, names="value")
@@ -321,7 +321,8 @@ class Explorer:
         for slider, name in zip(self.sliders, convention.angle_names, strict=True):
             slider.description = name
         self._state = _state(self.angles, convention)
-        _draw_state(self._ax, self._state)
+        self._figure.clear()
+        _draw_state(self._figure, (1, 1, 1), self._state)
         self.image.value = _png(self._figure)
         self.text.value = f"<pre>{html.escape(self._state.text)}</pre>"
 
@@ -335,9 +336,8 @@ class Explorer:
         from matplotlib.figure import Figure
 
         fig = Figure(figsize=(8.5, 4.2))
-        ax = add_3d_axes(fig, (1, 2, 1), 1.2, None)
+        ax = _draw_state(fig, (1, 2, 1), self._state)
         ax.set_position((0.04, 0.12, 0.42, 0.78))
-        _draw_state(ax, self._state)
         fig.text(0.5, 0.55, self._state.text, family="monospace", fontsize=10, va="center")
         fig.text(0.5, 0.04, RUN_SENTENCE, ha="center", fontsize=11, style="italic")
         return _png(fig)
