@@ -333,7 +333,7 @@ def repository_url(config: str) -> str:
     >>> repository_url("title: x\\n")
     ''
     """
-    import yaml
+    import yaml  # type: ignore[import-untyped]  # PyYAML, a dependency of Jupyter Book
 
     settings = yaml.safe_load(config) or {}
     url = (settings.get("repository") or {}).get("url") or ""
