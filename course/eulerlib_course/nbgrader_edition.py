@@ -266,14 +266,27 @@ def nbgrader_config() -> str:
 
     It sets nbgrader's ``ClearSolutions.code_stub`` to :data:`CODE_STUB`. nbgrader's own stub
     (``raise NotImplementedError()``) would make every answer cell fail even after the student
-    has filled in the ``...`` kept above the solution.
+    has filled in the ``...`` kept above the solution. And it puts the folder of the Python
+    that runs nbgrader first on ``PATH``: nbgrader starts the ``alembic`` command from ``PATH``
+    when it creates the gradebook, and a teacher who runs ``../.venv/bin/nbgrader`` without
+    activating the environment would otherwise meet ``FileNotFoundError: 'alembic'``.
     """
     return (
         "# nbgrader settings of the eulerlib course, as written by\n"
         "# `eulerlib-course notebooks nbgrader`.\n"
         "# Run nbgrader's commands in this folder, or copy these settings into the\n"
         "# nbgrader_config.py of your course.\n"
+        "import os\n"
+        "import sys\n"
+        "\n"
         "c = get_config()  # noqa: F821 (defined by nbgrader when it reads this file)\n"
+        "\n"
+        "# nbgrader runs the `alembic` command from PATH when it creates gradebook.db; with\n"
+        "# `../.venv/bin/nbgrader` and the environment not activated, that command is not on\n"
+        "# PATH. The folder of the Python that runs nbgrader holds it: look there first.\n"
+        "os.environ['PATH'] = os.pathsep.join(\n"
+        "    [os.path.dirname(sys.executable), os.environ.get('PATH', '')]\n"
+        ")\n"
         "\n"
         "# Each answer cell keeps the course's `answer_k = ...` line above the worked solution,\n"
         "# so the released copy needs only a note where the solution was (nbgrader's default,\n"

@@ -7,8 +7,10 @@ the stored notebook must be exactly what a fresh execution writes, in a normal f
 * code cells numbered 1, 2, 3, … in order, as a clean top-to-bottom run numbers them, and each
   result carrying the number of its cell;
 * consecutive pieces of printed output joined into one (the kernel may split a print);
-* cell metadata reduced to the ``tags`` and to JupyterLab's folding state,
-  ``jupyter.source_hidden`` and ``jupyter.outputs_hidden`` (worked solutions are stored folded);
+* cell metadata reduced to the ``tags``, to JupyterLab's folding state,
+  ``jupyter.source_hidden`` and ``jupyter.outputs_hidden`` (worked solutions are stored folded),
+  and to ``alt``, the text alternatives of the cell's figures (nbconvert's cell metadata of that
+  name; one string per figure, in order, see :func:`eulerlib_course.site.figure_alts`);
   no timings, no ``collapsed``/``scrolled`` state, no empty entries;
 * notebook metadata reduced to the ``python3`` kernelspec, the language name and, when a cell
   shows a widget, the widgets' saved state (``widgets``), which lets JupyterLab draw a widget's
@@ -57,7 +59,7 @@ _WIDGET_STATE = "application/vnd.jupyter.widget-state+json"
 
 #: The cell metadata the normal form keeps, as key paths (nbconvert's mask notation).
 CELL_METADATA_KEPT = frozenset(
-    {"tags", ("jupyter", "source_hidden"), ("jupyter", "outputs_hidden")}
+    {"tags", "alt", ("jupyter", "source_hidden"), ("jupyter", "outputs_hidden")}
 )
 
 

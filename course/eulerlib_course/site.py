@@ -30,14 +30,19 @@ MathJax) besides the ``notebooks`` extra's notebook tools; the command line is
 
 from __future__ import annotations
 
+import base64
 import contextlib
 import copy
+import hashlib
+import html as html_text
 import io
 import json
 import re
 import shutil
+import subprocess
 import tempfile
 import time
+import zipfile
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -51,6 +56,7 @@ __all__ = [
     "SiteBuild",
     "build_site",
     "course_pages",
+    "figure_alts",
     "jupyterlab_command",
     "prepare_notebook",
     "table_of_contents",
@@ -60,6 +66,10 @@ __all__ = [
 SITE_FOLDER = Path("site")
 #: Where ``eulerlib-course site build`` writes the site unless told otherwise (git-ignored).
 DEFAULT_OUT = Path("build") / "site"
+#: The zip of the repository's files that every page offers, in the site's ``downloads/``.
+COURSE_ZIP = "eulerlib-course.zip"
+#: The teachers' page, beside the landing page (``site/teachers.md``).
+TEACHERS_PAGE = "teachers"
 
 #: Extensions of Jupyter Book's default set that the site does without (see :func:`build_site`).
 _LEFT_OUT_EXTENSIONS = frozenset({"sphinx_thebe"})
@@ -75,12 +85,21 @@ _REMOTE_FONT_AWESOME = re.compile(
 _INCLUDE_MARKER = re.compile(r"""^:(?:start-after|end-before):\s*"([^"]+)"\s*$""", re.MULTILINE)
 #: A file the README shows on the landing page: ``src="figures/..."``.
 _README_PICTURE = re.compile(r"""\bsrc=["'](figures/[^"']+)["']""")
+#: An image of a page, by the file myst-nb wrote for it (named by the SHA-256 of its bytes).
+_PAGE_IMAGE = re.compile(r"""<img alt="[^"]*" src="((?:\.\./)*_images/([0-9a-f]{64})\.\w+)" """)
+#: The folding button myst-nb writes, named "Toggle hidden content" whatever it shows; its
+#: visible text ("Show the worked solution") is its name (WCAG 2.5.3, label in name).
+_TOGGLE_LABEL = '<summary aria-label="Toggle hidden content">'
+#: A code cell that opens a file of the notebooks' ``data/`` folder.
+_READS_DATA = re.compile(r"""["'(/]data/""")
+#: What a copy of the course leaves out when it is not a git checkout.
+_NOT_COURSE = frozenset({"build", "__pycache__", ".ipynb_checkpoints", ".venv", ".git"})
 
 _RUN_IT_YOURSELF = """\
 :::{{admonition}} Run this notebook yourself
 :class: tip
 {downloads} The notebooks use the repository's `eulerlib`: from the top folder of a copy of the
-repository, this command installs it and opens the course in JupyterLab.
+repository ({copy}), this command installs it and opens the course in JupyterLab.
 
 ```bash
 {command}
@@ -92,6 +111,12 @@ _BOTH_EDITIONS = (
     "or the [student copy](path:{student}) (exercises to fill in)."
 )
 _ONE_EDITION = "Download [this notebook](path:{teacher})."
+_WITH_DATA = (
+    " This notebook reads the files of `data/`: each download is a zip of a folder that holds the "
+    "notebook and its `data/` folder; unpack it and open the notebook where it is."
+)
+_WHOLE_COURSE = "download [the whole course](path:{course}) as a zip of the repository's files"
+_CLONE = ", or clone [the repository]({url})"
 _WIDGET_NOTE = (
     "*A picture of the controls in their first state: to move them, run this notebook in "
     "JupyterLab, as the box at the top of the page says.*"
@@ -147,11 +172,12 @@ def course_pages(notebook_folder: Path) -> list[Path]:
     return numbered + [path for path in notebooks if path not in numbered]
 
 
-def table_of_contents(pages: list[str]) -> dict[str, Any]:
+def table_of_contents(pages: list[str], teachers: str | None = None) -> dict[str, Any]:
     """The book's table of contents (``_toc.yml``) for notebook pages given in reading order.
 
     Numbered notebooks (``notebooks/01_...``) form the part "The course", the others (the
-    glossary) the part "Reference"; the landing page ``index`` is the root.
+    glossary) the part "Reference"; the landing page ``index`` is the root, and the teachers'
+    page, when given, is the part "For teachers".
 
     Examples
     --------
@@ -162,6 +188,8 @@ def table_of_contents(pages: list[str]) -> dict[str, Any]:
     numbered = [page for page in pages if re.match(r"\d+_", Path(page).name)]
     others = [page for page in pages if page not in numbered]
     parts = [("The course", numbered), ("Reference", others)]
+    if teachers is not None:
+        parts.append(("For teachers", [teachers]))
     return {
         "format": "jb-book",
         "root": "index",
@@ -174,7 +202,15 @@ def table_of_contents(pages: list[str]) -> dict[str, Any]:
 
 
 def prepare_notebook(
-    notebook: Any, *, teacher: str, student: str | None, command: str, name: str = "notebook"
+    notebook: Any,
+    *,
+    teacher: str,
+    student: str | None,
+    command: str,
+    name: str = "notebook",
+    course: str = "../downloads/eulerlib-course.zip",
+    repository: str = "",
+    with_data: bool = False,
 ) -> Any:
     """A copy of a course notebook made ready for its page on the website.
 
@@ -189,6 +225,12 @@ def prepare_notebook(
         The command that opens the course in JupyterLab (:func:`jupyterlab_command`).
     name : str, optional
         The notebook's file name, for error messages.
+    course : str, optional
+        Path of the zip of the whole course relative to the notebook's page.
+    repository : str, optional
+        The repository's address (``repository: url:`` in ``site/_config.yml``), or empty.
+    with_data : bool, optional
+        Whether the downloads are zips that carry the notebook's ``data/`` folder.
 
     Returns
     -------
@@ -224,8 +266,13 @@ def prepare_notebook(
         if student is not None
         else _ONE_EDITION.format(teacher=teacher)
     )
+    if with_data:
+        downloads += _WITH_DATA
+    where = _WHOLE_COURSE.format(course=course) + (
+        _CLONE.format(url=repository) if repository else ""
+    )
     box = nbformat.v4.new_markdown_cell(
-        _RUN_IT_YOURSELF.format(downloads=downloads, command=command)
+        _RUN_IT_YOURSELF.format(downloads=downloads, command=command, copy=where)
     )
     title_first = bool(cells) and cells[0].cell_type == "markdown" and cells[0].source[:1] == "#"
     cells.insert(1 if title_first else 0, box)
@@ -276,10 +323,143 @@ def landing_page_gaps(landing: str, readme: str) -> list[str]:
     ]
 
 
-def _stage(root: Path, stage: Path) -> tuple[list[str], list[str]]:
+def repository_url(config: str) -> str:
+    """The repository's address from the site's ``_config.yml`` (``repository: url:``), or "".
+
+    Examples
+    --------
+    >>> repository_url("repository:\\n  url: https://example.org/eulerlib\\n")
+    'https://example.org/eulerlib'
+    >>> repository_url("title: x\\n")
+    ''
+    """
+    import yaml  # type: ignore[import-untyped]  # PyYAML, a dependency of Jupyter Book
+
+    settings = yaml.safe_load(config) or {}
+    url = (settings.get("repository") or {}).get("url") or ""
+    return str(url).strip()
+
+
+def reads_data(notebook: Any) -> bool:
+    """Whether a code cell of ``notebook`` opens a file of the ``data/`` folder beside it.
+
+    Examples
+    --------
+    >>> cell = nbformat.v4.new_code_cell('np.loadtxt("data/x.csv")')
+    >>> reads_data(nbformat.v4.new_notebook(cells=[cell]))
+    True
+    >>> reads_data(nbformat.v4.new_notebook(cells=[nbformat.v4.new_markdown_cell("`data/x`")]))
+    False
+    """
+    return any(
+        cell.cell_type == "code" and _READS_DATA.search(cell.source) for cell in notebook.cells
+    )
+
+
+def _notebook_bytes(notebook: Any) -> bytes:
+    """The notebook as :func:`write_notebook` stores it."""
+    stream = io.StringIO()
+    nbformat.write(notebook, stream)
+    return stream.getvalue().encode("utf-8")
+
+
+def _zip_with_data(target: Path, folder: str, name: str, content: bytes, data: Path) -> None:
+    """A zip of ``folder/name`` (the notebook) and ``folder/data/...`` (its data files)."""
+    with zipfile.ZipFile(target, "w", compression=zipfile.ZIP_DEFLATED) as archive:
+        archive.writestr(f"{folder}/{name}", content)
+        for path in sorted(data.rglob("*")):
+            if path.is_file() and not _NOT_COURSE & set(path.parts):
+                archive.write(path, f"{folder}/data/{path.relative_to(data).as_posix()}")
+
+
+def _course_files(root: Path) -> list[Path]:
+    """The repository's files: git's list in a checkout, otherwise every file but builds."""
+    try:
+        listed = subprocess.run(
+            ["git", "ls-files", "-z"], cwd=root, capture_output=True, check=True, timeout=60
+        ).stdout.decode("utf-8")
+    except (OSError, subprocess.SubprocessError):
+        listed = ""
+    if listed:
+        files = [root / name for name in listed.split("\0") if name]
+        return [path for path in files if path.is_file()]
+    return [
+        path
+        for path in sorted(root.rglob("*"))
+        if path.is_file()
+        and not _NOT_COURSE & set(path.relative_to(root).parts)
+        and not any(part.endswith(".egg-info") for part in path.parts)
+    ]
+
+
+def _zip_course(root: Path, target: Path) -> None:
+    """A zip of the repository's files in a folder ``eulerlib/``, for readers without git."""
+    with zipfile.ZipFile(target, "w", compression=zipfile.ZIP_DEFLATED) as archive:
+        for path in _course_files(root):
+            archive.write(path, f"eulerlib/{path.relative_to(root).as_posix()}")
+
+
+def _picture_bytes(mime: str, content: Any) -> bytes:
+    """The bytes myst-nb writes for a picture output (and hashes to name the file)."""
+    text = "".join(content) if isinstance(content, list) else str(content)
+    if mime == "image/svg+xml":
+        return "\n".join(text.splitlines()).encode("utf-8")
+    return base64.b64decode(text)
+
+
+def figure_alts(notebook: Any) -> dict[str, str]:
+    """The text alternatives of a notebook's figures, by the SHA-256 of each picture's bytes.
+
+    A code cell that shows pictures stores their text alternatives in its metadata ``alt``
+    (nbconvert's name for it): a list with one string per picture output, in order, or one
+    string for a cell with one picture. A picture without one is left out.
+
+    Examples
+    --------
+    >>> png = base64.b64encode(b"a picture").decode()
+    >>> output = nbformat.v4.new_output("display_data", data={"image/png": png})
+    >>> cell = nbformat.v4.new_code_cell("plot()", outputs=[output])
+    >>> cell.metadata["alt"] = ["A red line climbs from left to right."]
+    >>> list(figure_alts(nbformat.v4.new_notebook(cells=[cell])).values())
+    ['A red line climbs from left to right.']
+    """
+    alts: dict[str, str] = {}
+    for cell in notebook.cells:
+        given = cell.get("metadata", {}).get("alt")
+        if cell.cell_type != "code" or not given:
+            continue
+        texts = [given] if isinstance(given, str) else list(given)
+        pictures = [
+            _picture_bytes(mime, output["data"][mime])
+            for output in cell.get("outputs", [])
+            for mime in sorted(_PICTURES & set(output.get("data", {})))[:1]
+        ]
+        for picture, text in zip(pictures, texts, strict=False):
+            alts[hashlib.sha256(picture).hexdigest()] = str(text)
+    return alts
+
+
+def _finish_pages(folder: Path, alts: dict[str, str]) -> None:
+    """Give the built pages' figures their text alternatives, and name the folding buttons."""
+    for page in folder.rglob("*.html"):
+        source = page.read_text(encoding="utf-8")
+
+        def alt(match: re.Match[str]) -> str:
+            text = alts.get(match.group(2))
+            if text is None:
+                return match.group(0)
+            return f'<img alt="{html_text.escape(text)}" src="{match.group(1)}" '
+
+        finished = _PAGE_IMAGE.sub(alt, source).replace(_TOGGLE_LABEL, "<summary>")
+        if finished != source:
+            page.write_text(finished, encoding="utf-8")
+
+
+def _stage(root: Path, stage: Path) -> tuple[list[str], list[str], dict[str, str]]:
     """Copy and prepare the book's sources in ``stage``.
 
-    Returns the notebook pages in reading order, and warnings about the README's course map.
+    Returns the notebook pages in reading order, warnings about the README's course map, and
+    the text alternatives of the notebooks' figures (:func:`figure_alts`).
     """
     site, notebook_folder = root / SITE_FOLDER, root / "notebooks"
     for folder in (site, notebook_folder):
@@ -293,8 +473,9 @@ def _stage(root: Path, stage: Path) -> tuple[list[str], list[str]]:
     shutil.copytree(site, stage, dirs_exist_ok=True)
     (stage / "README.md").write_text(readme, encoding="utf-8")
     warnings = [
-        f"site/index.md: WARNING: {gap}"
-        for gap in landing_page_gaps((site / "index.md").read_text(encoding="utf-8"), readme)
+        f"site/{page.name}: WARNING: {gap}"
+        for page in sorted(site.glob("*.md"))
+        for gap in landing_page_gaps(page.read_text(encoding="utf-8"), readme)
     ]
     for picture in sorted(set(_README_PICTURE.findall(readme))):
         if not (root / picture).is_file():
@@ -304,31 +485,54 @@ def _stage(root: Path, stage: Path) -> tuple[list[str], list[str]]:
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(root / picture, target)
     (stage / "_extra").mkdir(exist_ok=True)
-    teacher_folder = stage / "downloads" / "teacher"
-    student_folder = stage / "downloads" / "student"
-    for folder in (stage / "notebooks", teacher_folder, student_folder):
-        folder.mkdir(parents=True, exist_ok=True)
+    downloads = stage / "downloads"
+    downloads.mkdir(parents=True, exist_ok=True)
+    (stage / "notebooks").mkdir(parents=True, exist_ok=True)
+    _zip_course(root, downloads / COURSE_ZIP)
+    repository = repository_url((site / "_config.yml").read_text(encoding="utf-8"))
     pages = []
+    alts: dict[str, str] = {}
     for path in course_pages(notebook_folder):
         notebook = read_notebook(path)
-        shutil.copyfile(path, teacher_folder / path.name)
+        alts.update(figure_alts(notebook))
         has_solutions = any(
             SOLUTION_TAG in cell.metadata.get("tags", []) for cell in notebook.cells
         )
+        editions = {"teacher": path.read_bytes()}
         if has_solutions:
-            write_notebook(student_copy(notebook), student_folder / path.name)
+            editions["student"] = _notebook_bytes(student_copy(notebook))
+        with_data = reads_data(notebook) and (notebook_folder / "data").is_dir()
+        names = {}
+        for edition, content in editions.items():
+            stem = f"{path.stem}-{edition}" if has_solutions else path.stem
+            if with_data:
+                names[edition] = f"{stem}.zip"
+                _zip_with_data(
+                    downloads / names[edition],
+                    path.stem,
+                    f"{stem}.ipynb",
+                    content,
+                    notebook_folder / "data",
+                )
+            else:
+                names[edition] = f"{stem}.ipynb"
+                (downloads / names[edition]).write_bytes(content)
         page = prepare_notebook(
             notebook,
-            teacher=f"../downloads/teacher/{path.name}",
-            student=f"../downloads/student/{path.name}" if has_solutions else None,
+            teacher=f"../downloads/{names['teacher']}",
+            student=f"../downloads/{names['student']}" if has_solutions else None,
             command=command,
             name=path.name,
+            course=f"../downloads/{COURSE_ZIP}",
+            repository=repository,
+            with_data=with_data,
         )
         write_notebook(page, stage / "notebooks" / path.name)
         pages.append(f"notebooks/{path.stem}")
-    toc = json.dumps(table_of_contents(pages), indent=2)  # JSON is YAML
+    teachers = TEACHERS_PAGE if (stage / f"{TEACHERS_PAGE}.md").is_file() else None
+    toc = json.dumps(table_of_contents(pages, teachers), indent=2)  # JSON is YAML
     (stage / "_toc.yml").write_text(toc + "\n", encoding="utf-8")
-    return pages, warnings
+    return pages, warnings, alts
 
 
 def build_site(root: str | Path = ".", out: str | Path | None = None) -> SiteBuild:
@@ -366,7 +570,7 @@ def build_site(root: str | Path = ".", out: str | Path | None = None) -> SiteBui
 
     with tempfile.TemporaryDirectory(prefix="eulerlib-site-") as temporary:
         stage, html = Path(temporary) / "book", Path(temporary) / "html"
-        pages, readme_warnings = _stage(root, stage)
+        pages, readme_warnings, alts = _stage(root, stage)
         config = stage / "_config.yml"
         overrides: dict[str, Any] = {
             "external_toc_path": (stage / "_toc.yml").as_posix(),
@@ -381,6 +585,11 @@ def build_site(root: str | Path = ".", out: str | Path | None = None) -> SiteBui
         overrides["extensions"] = [
             name for name in sphinx_config["extensions"] if name not in _LEFT_OUT_EXTENSIONS
         ]
+        if repository_url(config.read_text(encoding="utf-8")):
+            overrides["html_theme_options"] = {
+                **sphinx_config.get("html_theme_options", {}),
+                "use_repository_button": True,
+            }
         log = io.StringIO()
         with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(log):
             result = build_sphinx(
@@ -394,6 +603,7 @@ def build_site(root: str | Path = ".", out: str | Path | None = None) -> SiteBui
             )
         if result != 0:
             raise ValueError(f"the site did not build: {log.getvalue().strip() or result}")
+        _finish_pages(html, alts)
         if out.exists():
             shutil.rmtree(out)
         out.parent.mkdir(parents=True, exist_ok=True)

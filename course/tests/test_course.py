@@ -92,7 +92,7 @@ def test_notebook_metadata_and_counts(path: Path) -> None:
     counts = [cell.execution_count for cell in notebook.cells if cell.cell_type == "code"]
     assert counts == list(range(1, len(counts) + 1)), f"execution counts {counts}"
     for index, cell in enumerate(notebook.cells):
-        extra = set(cell.get("metadata", {})) - {"tags", "jupyter"}
+        extra = set(cell.get("metadata", {})) - {"tags", "jupyter", "alt"}
         assert not extra, f"cell {index} carries stray metadata {sorted(extra)}"
         folding = set(cell.get("metadata", {}).get("jupyter", {}))
         assert folding <= FOLDING, f"cell {index} carries stray metadata {sorted(folding)}"

@@ -486,12 +486,19 @@ def answer(exercise: Exercise, verdict: str, index: int) -> tuple[str | None, st
 
 
 def nbgrader(course: Path, *args: str) -> None:
-    """Run an nbgrader command in the course folder, as a teacher would."""
-    environment = dict(
-        os.environ, PATH=os.pathsep.join([str(Path(sys.executable).parent), os.environ["PATH"]])
-    )
+    """Run an nbgrader command in the course folder exactly as the README writes it: the
+    environment's ``nbgrader`` script by its path, with the environment not on ``PATH`` (the
+    edition's configuration finds nbgrader's ``alembic`` itself)."""
+    scripts = Path(sys.executable).parent
+    path = [
+        entry
+        for entry in os.environ.get("PATH", "").split(os.pathsep)
+        if entry and Path(entry).resolve() != scripts.resolve()
+    ]
+    environment = dict(os.environ, PATH=os.pathsep.join(path))
+    environment.pop("VIRTUAL_ENV", None)
     result = subprocess.run(
-        [sys.executable, "-m", "nbgrader", *args],
+        [str(scripts / "nbgrader"), *args],
         cwd=course,
         env=environment,
         capture_output=True,

@@ -23,10 +23,13 @@ into the test's temporary folder.
 
 from __future__ import annotations
 
+import base64
 import functools
+import hashlib
 import html
 import http.server
 import importlib.util
+import io
 import os
 import re
 import shutil
@@ -35,6 +38,7 @@ import sys
 import tempfile
 import threading
 import urllib.request
+import zipfile
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from html.parser import HTMLParser
@@ -48,6 +52,7 @@ import pytest
 from eulerlib_course.site import (
     build_site,
     course_pages,
+    figure_alts,
     jupyterlab_command,
     landing_page_gaps,
     prepare_notebook,
@@ -59,8 +64,15 @@ REPO = Path(__file__).resolve().parents[2]
 README = (REPO / "README.md").read_text(encoding="utf-8")
 NOTEBOOKS = course_pages(REPO / "notebooks")
 NOTEBOOK_PAGES = [f"notebooks/{path.stem}.html" for path in NOTEBOOKS]
-#: Every page of the site: the landing page, one page per notebook, and the search page.
-PAGES = ["index.html", *NOTEBOOK_PAGES, "search.html"]
+#: Every page of the site: the landing page, one page per notebook, the teachers' page and the
+#: search page.
+PAGES = ["index.html", *NOTEBOOK_PAGES, "teachers.html", "search.html"]
+#: The widths at which every page is opened: a desktop's and a phone's (CSS pixels).
+DESKTOP, PHONE = 1280, 390
+#: axe-core, vendored with its licence and origin (vendor/axe-core/ORIGIN.md).
+AXE = Path(__file__).parent / "vendor" / "axe-core" / "axe.min.js"
+AXE_SHA256 = "29348999450cdf2849a8e70b7912fc2da85a849da39c0d0d5394f51d4a9ed95c"
+AXE_RULES = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"]
 notebook_pages = pytest.mark.parametrize(
     ("name", "path"), list(zip(NOTEBOOK_PAGES, NOTEBOOKS, strict=True)), ids=NOTEBOOK_PAGES
 )
@@ -188,11 +200,83 @@ def test_a_widget_without_a_picture_is_refused() -> None:
         prepare_notebook(notebook, teacher="t", student=None, command="c", name="99_x.ipynb")
 
 
+def picture_outputs(cell: Any) -> int:
+    return sum(
+        any(mime in output.get("data", {}) for mime in PICTURES)
+        for output in cell.get("outputs", [])
+    )
+
+
+def meaningless_alt(text: Any) -> str | None:
+    """Why ``text`` is no text alternative of a figure, or None when it is one."""
+    if not isinstance(text, str) or not text.strip():
+        return "empty"
+    if re.search(r"\.(png|svg|jpe?g|gif)\b", text) or re.fullmatch(r"[\w./-]+", text):
+        return f"a file name, not a description: {text!r}"
+    if len(text.split()) < 8:
+        return f"a few words, not a description: {text!r}"
+    if text.startswith(("<Figure", "Figure(", "Box(", "VBox(")):
+        return f"the output's text representation: {text!r}"
+    return None
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=[path.name for path in NOTEBOOKS])
+def test_every_figure_says_what_it_shows(path: Path) -> None:
+    problems = []
+    for index, cell in enumerate(read(path).cells):
+        count = picture_outputs(cell)
+        if cell.cell_type != "code" or not count:
+            continue
+        alts = cell.metadata.get("alt")
+        alts = [alts] if isinstance(alts, str) else list(alts or [])
+        if len(alts) != count:
+            problems.append(f"cell {index}: {count} figures, {len(alts)} text alternatives")
+        problems += [f"cell {index}: {why}" for why in map(meaningless_alt, alts) if why]
+    assert problems == []
+
+
+def test_the_animation_asks_no_other_host_and_says_what_it_shows() -> None:
+    notebook = read(REPO / "notebooks" / "07_gimbal_lock_seen.ipynb")
+    players = [
+        "".join(output["data"]["text/html"])
+        for cell in notebook.cells
+        for output in cell.get("outputs", [])
+        if "_anim_img" in "".join(output.get("data", {}).get("text/html", ""))
+    ]
+    assert len(players) == 1
+    (player,) = players
+    assert not re.search(r"(href|src)=[\"']https?://", player), "the player asks another host"
+    assert 'class="fa ' not in player, "the player still uses Font Awesome icons"
+    alt = re.search(r'<img id="_anim_img\w*" alt="([^"]*)"', player)
+    assert alt is not None and meaningless_alt(html.unescape(alt.group(1))) is None
+    assert re.search(r'<input id="_anim_slider\w*" aria-label="Frame"', player)
+
+
+def test_figure_alts_follow_the_pictures_of_each_cell() -> None:
+    pngs = [b"first picture", b"second picture"]
+    outputs = [
+        nbformat.v4.new_output("display_data", data={"image/png": base64.b64encode(png).decode()})
+        for png in pngs
+    ]
+    cell = nbformat.v4.new_code_cell("plot()", outputs=outputs)
+    cell.metadata["alt"] = ["what the first one shows", "what the second one shows"]
+    alts = figure_alts(nbformat.v4.new_notebook(cells=[cell]))
+    assert alts == {
+        hashlib.sha256(pngs[0]).hexdigest(): "what the first one shows",
+        hashlib.sha256(pngs[1]).hexdigest(): "what the second one shows",
+    }
+
+
 def test_table_of_contents_follows_the_notebooks_and_ends_with_the_glossary() -> None:
     pages = [f"notebooks/{path.stem}" for path in NOTEBOOKS]
     toc = table_of_contents(pages)
     chapters = [chapter["file"] for part in toc["parts"] for chapter in part["chapters"]]
     assert chapters == pages
+    with_teachers = table_of_contents(pages, "teachers")
+    assert with_teachers["parts"][-1] == {
+        "caption": "For teachers",
+        "chapters": [{"file": "teachers"}],
+    }
     numbered = [path.stem for path in NOTEBOOKS if re.match(r"\d\d_", path.name)]
     assert [Path(page).name for page in chapters[: len(numbered)]] == numbered
     assert chapters[-1] == "notebooks/glossary"
@@ -339,6 +423,10 @@ FACTS = """async () => {
       .map((i) => i.currentSrc || i.src),
     outputPictures: [...document.querySelectorAll(".cell_output img")]
       .filter((i) => !i.closest(".text_html")).length,
+    figureAlts: [...document.querySelectorAll(".cell_output img")]
+      .filter((i) => !i.closest(".text_html")).map((i) => i.alt),
+    imagesWithoutAlt: [...document.images].filter((i) => !i.hasAttribute("alt"))
+      .map((i) => i.id || i.src.slice(0, 80)),
     folds: folds.map((d) => ({
       open: d.open,
       visible: [...d.querySelectorAll("pre")].some((p) => p.checkVisibility()),
@@ -383,11 +471,72 @@ def watch(page: Any, visit: Visit) -> None:
     page.on("requestfailed", request_failed)
 
 
+#: The axe-core rules of WCAG 2.1 A and AA, run in the page; each violation with its first nodes.
+AXE_RUN = """async (tags) => {
+  const result = await axe.run(document, {runOnly: {type: "tag", values: tags}});
+  return result.violations.map((v) => ({
+    rule: v.id,
+    impact: v.impact,
+    nodes: v.nodes.slice(0, 3).map((n) => n.target.join(" ") + " :: " + n.html.slice(0, 200)),
+  }));
+}"""
+
+#: What the phone sees: horizontal overflow of the page, and the course map's layout.
+PHONE_FACTS = """() => {
+  const map = document.querySelector("table.course-map");
+  return {
+    overflow: document.documentElement.scrollWidth - document.documentElement.clientWidth,
+    mapRowsAsCards: map ? [...map.querySelectorAll("tbody tr")].every(
+      (row) => getComputedStyle(row).display === "block") : null,
+    mapWidth: map ? map.getBoundingClientRect().width : null,
+  };
+}"""
+
+
+def axe_source() -> str:
+    source = AXE.read_bytes()
+    assert hashlib.sha256(source).hexdigest() == AXE_SHA256, "axe.min.js is not the vendored file"
+    return source.decode("utf-8")
+
+
+def open_page(context: Any, site: Site, name: str, width: int, visit: Visit) -> Any:
+    page = context.new_page()
+    page.set_viewport_size({"width": width, "height": 900})
+    watch(page, visit)
+    response = page.goto(site.url + name, wait_until="load")
+    assert response is not None
+    visit.source = response.text()
+    visit.facts = page.evaluate(FACTS)
+    page.wait_for_load_state("networkidle")
+    return page
+
+
 @pytest.fixture(scope="module")
-def visits(site: Site, tmp_path_factory: pytest.TempPathFactory) -> dict[str, Visit]:
-    """Open every page once in headless Chromium; take two screenshots."""
+def browser(site: Site) -> Iterator[Any]:
+    """A headless Chromium with a fresh profile (the system's, driven by Playwright)."""
     from playwright.sync_api import sync_playwright
 
+    arguments = [*CHROMIUM_ARGS]
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        arguments.append("--no-sandbox")  # Chromium refuses to run as root otherwise
+    with tempfile.TemporaryDirectory() as profile, sync_playwright() as playwright:
+        context = playwright.chromium.launch_persistent_context(
+            profile,  # a fresh --user-data-dir
+            executable_path=chromium_executable(),
+            headless=True,
+            args=arguments,
+            viewport={"width": DESKTOP, "height": 900},
+        )
+        yield context
+        context.close()
+
+
+@pytest.fixture(scope="module")
+def visits(
+    site: Site, browser: Any, tmp_path_factory: pytest.TempPathFactory
+) -> dict[tuple[str, int], Visit]:
+    """Open every page once at a desktop's width and once at a phone's; run axe-core on each;
+    take two screenshots at each width."""
     shots = Path(os.environ.get("EULERLIB_SITE_SCREENSHOTS") or tmp_path_factory.mktemp("shots"))
     shots.mkdir(parents=True, exist_ok=True)
     widget_pages = [
@@ -396,33 +545,24 @@ def visits(site: Site, tmp_path_factory: pytest.TempPathFactory) -> dict[str, Vi
         if shows_widget(read(path))
     ]
     second = (widget_pages or NOTEBOOK_PAGES)[0]
-    screenshots = {"index.html": "landing.png", second: Path(second).with_suffix(".png").name}
-    arguments = [*CHROMIUM_ARGS]
-    if hasattr(os, "geteuid") and os.geteuid() == 0:
-        arguments.append("--no-sandbox")  # Chromium refuses to run as root otherwise
-    results: dict[str, Visit] = {}
-    with tempfile.TemporaryDirectory() as profile, sync_playwright() as playwright:
-        context = playwright.chromium.launch_persistent_context(
-            profile,  # a fresh --user-data-dir
-            executable_path=chromium_executable(),
-            headless=True,
-            args=arguments,
-            viewport={"width": 1280, "height": 900},
-        )
+    screenshots = {"index.html": "landing", second: Path(second).stem}
+    axe = axe_source()
+    results: dict[tuple[str, int], Visit] = {}
+    for width in (DESKTOP, PHONE):
         for name in PAGES:
-            visit = results[name] = Visit()
-            page = context.new_page()
-            watch(page, visit)
-            response = page.goto(site.url + name, wait_until="load")
-            assert response is not None
-            visit.source = response.text()
-            visit.facts = page.evaluate(FACTS)
-            page.wait_for_load_state("networkidle")
+            visit = results[name, width] = Visit()
+            page = open_page(browser, site, name, width, visit)
+            if width == PHONE:
+                visit.facts.update(page.evaluate(PHONE_FACTS))
+            page.add_script_tag(content=axe)
+            visit.facts["axe"] = page.evaluate(AXE_RUN, AXE_RULES)
             if name in screenshots:
-                page.screenshot(path=str(shots / screenshots[name]), full_page=True)
+                shot = shots / f"{screenshots[name]}-{width}.png"
+                page.screenshot(path=str(shot), full_page=True)
             page.close()
-        context.close()
-    print(f"screenshots of the site: {', '.join(str(shots / n) for n in screenshots.values())}")
+    print(
+        f"screenshots of the site: {', '.join(str(path) for path in sorted(shots.glob('*.png')))}"
+    )
     return results
 
 
@@ -441,8 +581,11 @@ def test_every_page_is_opened(site: Site) -> None:
 
 
 @pytest.mark.parametrize("name", PAGES)
-def test_page_asks_no_other_host_and_loads_everything(visits: dict[str, Visit], name: str) -> None:
-    visit = visits[name]
+@pytest.mark.parametrize("width", [DESKTOP, PHONE])
+def test_page_asks_no_other_host_and_loads_everything(
+    visits: dict[tuple[str, int], Visit], name: str, width: int
+) -> None:
+    visit = visits[name, width]
     assert visit.refused == [], "requests to other hosts"
     assert visit.failed == [], "failed requests"
     assert visit.facts["brokenImages"] == [], "images that did not load"
@@ -450,8 +593,8 @@ def test_page_asks_no_other_host_and_loads_everything(visits: dict[str, Visit], 
 
 
 @pytest.mark.parametrize("name", PAGES)
-def test_page_math_is_typeset(visits: dict[str, Visit], name: str) -> None:
-    visit = visits[name]
+def test_page_math_is_typeset(visits: dict[tuple[str, int], Visit], name: str) -> None:
+    visit = visits[name, DESKTOP]
     math_elements = len(re.findall(r'class="[^"]*\bmath\b[^"]*"', visit.source))
     assert visit.facts["typeset"] == math_elements
     assert visit.facts["texErrors"] == []
@@ -461,9 +604,9 @@ def test_page_math_is_typeset(visits: dict[str, Visit], name: str) -> None:
 
 @notebook_pages
 def test_page_folds_worked_solutions_and_shows_pictures(
-    visits: dict[str, Visit], name: str, path: Path
+    visits: dict[tuple[str, int], Visit], name: str, path: Path
 ) -> None:
-    notebook, visit = read(path), visits[name]
+    notebook, visit = read(path), visits[name, DESKTOP]
     folds = visit.facts["folds"]
     assert len(folds) == solution_count(notebook)
     assert all(not fold["open"] and not fold["visible"] for fold in folds)
@@ -472,10 +615,70 @@ def test_page_folds_worked_solutions_and_shows_pictures(
     assert jupyterlab_command(README) in page_text(visit.source)
 
 
-def test_pages_are_in_course_order(visits: dict[str, Visit]) -> None:
-    navigation = [path.lstrip("/") for path in visits["index.html"].facts["navigation"]]
+def test_pages_are_in_course_order(visits: dict[tuple[str, int], Visit]) -> None:
+    navigation = [path.lstrip("/") for path in visits["index.html", DESKTOP].facts["navigation"]]
     shown = [path for path in navigation if path in NOTEBOOK_PAGES]
     assert shown == NOTEBOOK_PAGES
+
+
+@pytest.mark.parametrize("width", [DESKTOP, PHONE])
+@pytest.mark.parametrize("name", PAGES)
+def test_page_has_no_accessibility_violation(
+    visits: dict[tuple[str, int], Visit], name: str, width: int
+) -> None:
+    """axe-core's WCAG 2.1 A and AA rules find nothing, at a desktop's and at a phone's width."""
+    visit = visits[name, width]
+    assert visit.facts["axe"] == [], "axe-core found violations"
+    assert visit.facts["imagesWithoutAlt"] == []
+
+
+@notebook_pages
+def test_page_figures_carry_their_text_alternatives(
+    visits: dict[tuple[str, int], Visit], name: str, path: Path
+) -> None:
+    expected = []
+    for cell in read(path).cells:
+        if cell.cell_type == "code" and picture_outputs(cell):
+            alts = cell.metadata.get("alt")
+            expected += [alts] if isinstance(alts, str) else list(alts or [])
+    assert visits[name, DESKTOP].facts["figureAlts"] == expected
+
+
+def test_the_course_map_fits_a_phone(visits: dict[tuple[str, int], Visit]) -> None:
+    facts = visits["index.html", PHONE].facts
+    assert facts["mapRowsAsCards"] is True
+    assert facts["mapWidth"] <= PHONE
+    for name in PAGES:
+        assert visits[name, PHONE].facts["overflow"] <= 0, f"{name} scrolls sideways on a phone"
+
+
+@pytest.mark.parametrize("width", [PHONE, 900, DESKTOP])
+def test_the_menu_button_shows_and_hides_the_chapters(site: Site, browser: Any, width: int) -> None:
+    """The ☰ button a reader sees opens the chapter list on a phone (as a dialog) and folds it
+    away and back on a desktop."""
+    visit = Visit()
+    page = open_page(browser, site, NOTEBOOK_PAGES[4], width, visit)
+    chapters = page.locator("nav.bd-docs-nav a.reference.internal:visible")
+    button = page.locator(".primary-toggle:visible")
+    assert button.count() == 1
+    shown_at_first = chapters.count()
+    button.click()
+    page.wait_for_timeout(700)  # the theme's transition
+    shown_after = chapters.count()
+    if width < 992:
+        assert (shown_at_first, shown_after) == (0, len(PAGES) - 1)  # all pages but search
+        assert page.evaluate("document.getElementById('pst-primary-sidebar-modal').open")
+        target = chapters.nth(7).evaluate("(a) => a.href")
+        chapters.nth(7).click()
+        page.wait_for_load_state("load")
+        assert page.url == target != site.url + NOTEBOOK_PAGES[4]
+    else:
+        assert (shown_at_first, shown_after) == (len(PAGES) - 1, 0)
+        button.click()
+        page.wait_for_timeout(700)
+        assert chapters.count() == len(PAGES) - 1
+    page.close()
+    assert visit.console_errors == [] and visit.refused == []
 
 
 class Links(HTMLParser):
@@ -532,26 +735,118 @@ def test_local_links_and_anchors_exist(site: Site, name: str) -> None:
     assert broken == []
 
 
+def fetch(site: Site, name: str, href: str) -> tuple[str, bytes]:
+    """The file name and the bytes of a download linked from the page ``name``."""
+    url = urljoin(site.url + name, href)
+    with urllib.request.urlopen(url) as reply:
+        return unquote(urlsplit(url).path).rsplit("/", 1)[-1], bytes(reply.read())
+
+
+def unpack(content: bytes, into: Path) -> list[str]:
+    archive = zipfile.ZipFile(io.BytesIO(content))
+    archive.extractall(into)
+    return sorted(archive.namelist())
+
+
 @notebook_pages
 def test_page_offers_the_teacher_edition_and_the_student_copy(
-    site: Site, name: str, path: Path
+    site: Site, name: str, path: Path, tmp_path: Path
 ) -> None:
+    """Each download has a name of its own and works alone: a notebook that reads data/ comes
+    as a zip of a folder that holds it and its data."""
     downloads = links_of(site, name).downloads
-
-    def fetch(label: str) -> bytes:
-        with urllib.request.urlopen(urljoin(site.url + name, downloads[label])) as reply:
-            return bytes(reply.read())
-
+    downloads.pop("the whole course", None)  # test_page_says_how_to_get_the_whole_course
     committed = path.read_bytes()
-    if solution_count(read(path)):
-        assert set(downloads) == {"teacher’s edition", "student copy"}
-        assert fetch("teacher’s edition") == committed
-        student = nbformat.reads(fetch("student copy").decode("utf-8"), as_version=4)
+    data = REPO / "notebooks" / "data"
+    with_data = (
+        re.search(
+            r"""["'(/]data/""",
+            "".join(cell.source for cell in read(path).cells if cell.cell_type == "code"),
+        )
+        is not None
+    )
+    editions = {"teacher’s edition": "teacher", "student copy": "student"}
+    if not solution_count(read(path)):
+        editions = {"this notebook": ""}
+    assert set(downloads) == set(editions)
+    received = {}
+    for label, edition in editions.items():
+        file_name, content = fetch(site, name, downloads[label])
+        stem = f"{path.stem}-{edition}" if edition else path.stem
+        if with_data:
+            assert file_name == f"{stem}.zip"
+            names = unpack(content, tmp_path / edition)
+            folder = tmp_path / edition / path.stem
+            expected = sorted(
+                f"{path.stem}/data/{file.relative_to(data).as_posix()}"
+                for file in data.rglob("*")
+                if file.is_file() and "__pycache__" not in file.parts
+            )
+            assert names == sorted([f"{path.stem}/{stem}.ipynb", *expected])
+            content = (folder / f"{stem}.ipynb").read_bytes()
+        else:
+            assert file_name == f"{stem}.ipynb"
+        received[edition] = content
+    if "teacher" in received:
+        assert received["teacher"] == committed
+        student = nbformat.reads(received["student"].decode("utf-8"), as_version=4)
         assert student == student_copy(read(path))
         assert solution_count(student) == 0
     else:
-        assert set(downloads) == {"this notebook"}
-        assert fetch("this notebook") == committed
+        assert received[""] == committed
+
+
+def test_a_downloaded_notebook_with_data_runs_alone(site: Site, tmp_path: Path) -> None:
+    """The teacher's edition of a notebook that reads data/, unpacked from its zip into an empty
+    folder, runs from top to bottom there."""
+    from nbclient import NotebookClient
+
+    readers = [
+        (page, path)
+        for page, path in zip(NOTEBOOK_PAGES, NOTEBOOKS, strict=True)
+        if "-teacher.zip" in " ".join(links_of(site, page).downloads.values())
+    ]
+    assert readers, "no notebook is offered with its data"
+    page, path = readers[0]
+    _, content = fetch(site, page, links_of(site, page).downloads["teacher’s edition"])
+    unpack(content, tmp_path)
+    notebook_path = tmp_path / path.stem / f"{path.stem}-teacher.ipynb"
+    notebook = nbformat.read(str(notebook_path), as_version=4)
+    NotebookClient(
+        notebook,
+        timeout=300,
+        kernel_name="python3",
+        resources={"metadata": {"path": str(notebook_path.parent)}},
+    ).execute()
+    errors = [
+        output
+        for cell in notebook.cells
+        for output in cell.get("outputs", [])
+        if output.get("output_type") == "error"
+    ]
+    assert errors == []
+
+
+@pytest.mark.parametrize("name", [*NOTEBOOK_PAGES, "teachers.html"])
+def test_page_says_how_to_get_the_whole_course(site: Site, name: str, tmp_path: Path) -> None:
+    """With no public address for the repository, every notebook page and the teachers' page
+    offer the repository's files as one zip, which holds what the README's commands need."""
+    links = [target for target in links_of(site, name).targets if target.endswith(".zip")]
+    course = [target for target in links if target.endswith("/eulerlib-course.zip")]
+    assert course, "no link to the whole course"
+    _, content = fetch(site, name, course[0])
+    names = set(unpack(content, tmp_path))
+    for needed in (
+        "README.md",
+        "pyproject.toml",
+        ".ci/constraints.txt",
+        "course/pyproject.toml",
+        "eulerlib/__init__.py",
+        "notebooks/14_a_real_imu_recording.ipynb",
+        "notebooks/data/00033_Quaternion.csv",
+    ):
+        assert f"eulerlib/{needed}" in names
+    assert not any("/build/" in name or "/.venv/" in name for name in names)
 
 
 def test_landing_page_is_the_readme_course_map(site: Site) -> None:
