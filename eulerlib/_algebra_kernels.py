@@ -17,6 +17,8 @@ from eulerlib._length_kernels import TINY, binary_exponents, lengths, squared_le
 
 Array = NDArray[np.float64]
 
+_LN2 = float(np.log(2.0))
+
 
 def hamilton_product(p: Array, q: Array, out: Array) -> None:
     """Write into ``out`` (shape ``(4, n)``) the Hamilton products ``p q``, term by term.
@@ -96,34 +98,39 @@ def exponentials(scalar: Array | None, v: Array) -> Array:
     return out
 
 
-def polar_forms(q: Array) -> tuple[Array, Array, Array]:
-    """``|q|``, the angle ``θ = atan2(|v|, w)`` in [0, π] and the unit vector ``v / |v|`` of
-    nonzero quaternions: ``q = |q| (cos θ, sin θ v / |v|)``.
+def polar_forms(q: Array) -> tuple[Array, NDArray[np.int32], Array, Array]:
+    """The polar form ``q = |q| (cos θ, sin θ v / |v|)`` of nonzero quaternions: ``|q|`` as
+    ``m 2**e`` (``m`` in [0.5, 2), ``e`` an integer, so that no length is subnormal or
+    infinite), the angle ``θ = atan2(|v|, w)`` in [0, π] and the unit vector ``v / |v|``.
 
-    The angle comes from ``atan2`` of the two parts, never from ``acos(w / |q|)``, so it is
-    accurate to a few units in the last place near 0 and near π alike.
+    The whole quaternion is scaled by ``2**-e`` first, which is exact, so ``|v|`` and ``w`` keep
+    all their digits even when the quaternion is tiny; the angle comes from ``atan2`` of the two
+    parts, never from ``acos(w / |q|)``, so it is accurate to a few units in the last place near
+    0 and near π alike.
     """
-    unit, sine = directions(q[1:])
-    angle: Array = np.arctan2(sine, q[0])
-    return lengths(q), angle, unit
+    part, exponent = scaled(q)
+    unit, sine = directions(part[1:])
+    angle: Array = np.arctan2(sine, part[0])
+    return lengths(part), exponent, angle, unit
 
 
 def logarithms(q: Array) -> Array:
     """``log q = (ln |q|, θ v / |v|)`` of nonzero quaternions, shape ``(4, n)``."""
-    norm, angle, unit = polar_forms(q)
+    mantissa, exponent, angle, unit = polar_forms(q)
     out = np.empty_like(q)
-    np.log(norm, out=out[0])
+    np.log(mantissa, out=out[0])
+    out[0] += exponent * _LN2
     np.multiply(unit, angle, out=out[1:])
     return out
 
 
 def powers(q: Array, t: Array) -> Array:
     """``q^t = exp(t log q) = |q|^t (cos tθ, sin tθ v / |v|)`` of nonzero quaternions."""
-    norm, angle, unit = polar_forms(q)
+    mantissa, exponent, angle, unit = polar_forms(q)
     turn = angle * t
     out = np.empty_like(q)
     np.cos(turn, out=out[0])
     np.multiply(unit, np.sin(turn), out=out[1:])
     with np.errstate(over="ignore", under="ignore"):  # |q|^t beyond float64's range
-        out *= np.power(norm, t)
+        out *= np.power(mantissa, t) * np.exp2(exponent * t)
     return out

@@ -32,10 +32,12 @@ found in closed form from one SVD (R. Hartley et al., "Rotation averaging", 2013
 The **geodesic** (Karcher) L2 mean instead minimizes ``Σ w θ(R_i, M)²``, the squared angles
 between the rotations, and has no closed form: it is found by iterating
 ``M ← M Exp(Σ w Log(Mᵀ R_i) / Σ w)``. The chordal distance ``2√2 sin(θ/2)`` grows more slowly
-than θ, so the chordal mean gives a far-off rotation a little less pull than the geodesic
-mean does; the two differ by a small fraction of the rotations' spread (nothing for two equally
-weighted rotations, where both are the midpoint) and agree for rotations clustered within a few
-degrees. The chordal mean is the usual starting point of the geodesic iteration.
+than θ, so the chordal mean gives a far-off rotation less pull than the geodesic mean does.
+For two equally weighted rotations both are the midpoint; otherwise they differ by a term of
+third order in the spread of the rotations: by about a thousandth of the spread for rotations
+within a few degrees of each other (measured: 8e-5 rad for ten rotations scattered by 0.05
+rad), but by a sizeable part of it for rotations spread over a radian or more. The chordal
+mean is the usual starting point of the geodesic iteration.
 """
 
 from __future__ import annotations
