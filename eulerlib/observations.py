@@ -50,8 +50,10 @@ __all__ = ["Alignment", "align_vectors"]
 Array = NDArray[np.float64]
 
 #: A problem whose margin ``s2 + d s3`` is at most this fraction of ``s1`` (or, with an infinite
-#: weight, whose secondary pairs turn the answer by at most this much) does not determine one
-#: rotation: the vectors are parallel to within about 1e-12, and rounding would pick the answer.
+#: weight, whose secondary pairs pull on the turn about the primary one by at most this fraction
+#: of their size) does not determine one rotation. Two unit vectors at the angle φ give the
+#: fraction ``(1 − cos φ) / (1 + cos φ) ≈ φ² / 4``, so the limit is φ ≈ 2⁻¹⁹ ≈ 2e-6 rad, where
+#: the rounding of the input alone would turn the answer by about 2⁻¹² ≈ 2e-4 rad.
 DEGENERATE = 2.0**-40
 
 
@@ -141,8 +143,9 @@ def align_vectors(a: ArrayLike, b: ArrayLike, weights: ArrayLike | None = None) 
     weight, as in SciPy. Each problem's vectors and weights are first scaled by powers of two,
     which changes neither the answer nor any digit, so vectors as long as 1e200 or as short as
     1e-200 are aligned as well as unit ones. A problem counts as degenerate when ``s2 + d s3``
-    is at most ``2⁻⁴⁰ s1``: vectors parallel to within about 1e-12 rad, where rounding alone
-    would choose the rotation.
+    is at most ``2⁻⁴⁰ s1``: for two vectors, when they are parallel to within about 2e-6 rad,
+    where the rounding of the input alone would turn the answer by about 2e-4 rad. Closer to
+    parallel the answer is mostly rounding, and SciPy only warns.
 
     Examples
     --------
