@@ -10,6 +10,8 @@ overflow or lose digits on the way.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -134,3 +136,154 @@ def powers(q: Array, t: Array) -> Array:
     with np.errstate(over="ignore", under="ignore"):  # |q|^t beyond float64's range
         out *= np.power(mantissa, t) * np.exp2(exponent * t)
     return out
+
+
+# --- one quaternion at a time ---------------------------------------------------------------------
+#
+# A call on one quaternion spends most of its time in numpy's per-call overhead, a few
+# microseconds for each of the thirty-odd operations above. The functions below compute the same
+# formulas, in the same order, on four Python floats (``(w, x, y, z)``), so that one quaternion
+# costs a few microseconds. The arithmetic is bit for bit that of the block functions; the sines,
+# cosines and logarithms come from the C library instead of numpy's loops and may differ from
+# them in the last bit. The caller uses them only where no intermediate can overflow:
+# :func:`moderate` says when.
+
+Quad = tuple[float, float, float, float]
+
+#: Components below 2**-500 or above 2**500 take the block functions, which handle the edges of
+#: float64's range as numpy does; between them no square and no inverse overflows.
+_LIMIT = 2.0**500
+_SMALL, _LARGE = 2.0**-1000, 2.0**1000  # as in eulerlib._length_kernels
+
+
+def moderate(values: list[float]) -> bool:
+    """True when every nonzero ``|value|`` lies within [2**-500, 2**500]."""
+    return all(value == 0.0 or 1.0 / _LIMIT <= abs(value) <= _LIMIT for value in values)
+
+
+def product_one(p: Quad, q: Quad) -> Quad:
+    """:func:`hamilton_product` of one pair."""
+    pw, px, py, pz = p
+    qw, qx, qy, qz = q
+    w = pw * qw
+    w -= px * qx
+    w -= py * qy
+    w -= pz * qz
+    x = pw * qx
+    x += px * qw
+    x += py * qz
+    x -= pz * qy
+    y = pw * qy
+    y -= px * qz
+    y += py * qw
+    y += pz * qx
+    z = pw * qz
+    z += px * qy
+    z -= py * qx
+    z += pz * qw
+    return w, x, y, z
+
+
+def _scaled_one(values: tuple[float, ...]) -> tuple[list[float], int]:
+    exponent = math.frexp(max(abs(value) for value in values))[1]
+    return [math.ldexp(value, -exponent) for value in values], exponent
+
+
+def _squared_one(values: list[float]) -> float:
+    total = values[0] * values[0]
+    for value in values[1:]:
+        total += value * value
+    return total
+
+
+def _length_one(values: list[float]) -> float:
+    """:func:`eulerlib._length_kernels.lengths` of one vector, step by step."""
+    squared = _squared_one(values)
+    if _SMALL <= squared <= _LARGE:
+        return math.sqrt(squared)
+    part, exponent = _scaled_one(tuple(values))
+    return math.ldexp(math.sqrt(_squared_one(part)), exponent)
+
+
+def inverse_one(q: Quad) -> Quad:
+    """:func:`inverses` of one nonzero quaternion."""
+    part, exponent = _scaled_one(q)
+    factor = 1.0 / _squared_one(part)
+    w, x, y, z = (math.ldexp(value * factor, -exponent) for value in part)
+    return w, -x, -y, -z
+
+
+def _direction_one(v: list[float]) -> tuple[list[float], float]:
+    """:func:`directions` of one vector: its unit vector (``(1, 0, 0)`` for 0) and length."""
+    length = _length_one(v)
+    if length == 0.0:
+        return [1.0, 0.0, 0.0], 0.0
+    part, _ = _scaled_one(tuple(v))
+    size = math.sqrt(_squared_one(part))
+    return [value / size for value in part], length
+
+
+def exp_one(scalar: float, v: list[float]) -> Quad:
+    """:func:`exponentials` of one quaternion ``scalar + v``."""
+    unit, angle = _direction_one(v)
+    sine = math.sin(angle)
+    factor = math.exp(scalar)
+    return (
+        math.cos(angle) * factor,
+        unit[0] * sine * factor,
+        unit[1] * sine * factor,
+        unit[2] * sine * factor,
+    )
+
+
+def _polar_one(q: Quad) -> tuple[float, int, float, list[float]]:
+    part, exponent = _scaled_one(q)
+    unit, sine = _direction_one(part[1:])
+    return _length_one(part), exponent, math.atan2(sine, part[0]), unit
+
+
+def log_one(q: Quad) -> Quad:
+    """:func:`logarithms` of one nonzero quaternion."""
+    mantissa, exponent, angle, unit = _polar_one(q)
+    scalar = math.log(mantissa)
+    scalar += exponent * _LN2
+    return scalar, unit[0] * angle, unit[1] * angle, unit[2] * angle
+
+
+def power_one(q: Quad, t: float) -> Quad:
+    """:func:`powers` of one nonzero quaternion; ``|t|`` and ``|t e|`` at most 500."""
+    mantissa, exponent, angle, unit = _polar_one(q)
+    turn = angle * t
+    sine = math.sin(turn)
+    factor = mantissa**t * 2.0 ** (exponent * t)
+    return (
+        math.cos(turn) * factor,
+        unit[0] * sine * factor,
+        unit[1] * sine * factor,
+        unit[2] * sine * factor,
+    )
+
+
+def matrix_one(q: Quad) -> list[float]:
+    """The nine entries of the rotation matrix of one quaternion of moderate size, row by row:
+    the formulas of :func:`eulerlib._quaternion_kernels.quaternions_to_entries`, in its order."""
+    w, x, y, z = q
+    ww, xx, yy, zz = w * w, x * x, y * y, z * z
+    a, b = ww - zz, xx - yy
+    ww += zz
+    xx += yy
+    r = 1.0 / (ww + xx)
+    e = [0.0] * 9
+    e[0], e[4], e[8] = (a + b) * r, (a - b) * r, (ww - xx) * r
+    r += r
+    xs, ys, zs = x * r, y * r, z * r
+    wx, wy, wz = w * xs, w * ys, w * zs
+    for first, second, with_w, minus, plus in (
+        (xs, y, wz, 1, 3),
+        (xs, z, wy, 6, 2),
+        (ys, z, wx, 5, 7),
+    ):
+        t = first * second + 0.0
+        e[minus] = t - with_w
+        e[plus] = t + with_w
+    return e

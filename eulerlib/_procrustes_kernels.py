@@ -16,27 +16,20 @@ from numpy.typing import NDArray
 Array = NDArray[np.float64]
 
 
-def _determinants(A: Array) -> Array:
-    """Determinants of a stack of 3×3 matrices ``(n, 3, 3)``, by the rule of Sarrus."""
-    a, b, c = A[:, 0, 0], A[:, 0, 1], A[:, 0, 2]
-    d, e, f = A[:, 1, 0], A[:, 1, 1], A[:, 1, 2]
-    g, h, i = A[:, 2, 0], A[:, 2, 1], A[:, 2, 2]
-    result: Array = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g)
-    return result
-
-
 def special_procrustes(M: Array) -> tuple[Array, Array, Array]:
     """The rotations ``C`` that maximize ``tr(Cᵀ M)`` for a stack ``M`` ``(n, 3, 3)``.
 
     Returns ``C`` ``(n, 3, 3)``, the singular values ``(n, 3)`` (largest first) and the margin
     ``s2 + d s3`` ``(n,)``: the maximum is unique exactly when the margin is positive, and a
     margin that is tiny next to ``s1`` means that rounding decides the answer.
+    ``d = det U det V = det(U Vᵀ)`` is ±1, and ``U diag(1, 1, −1) Vᵀ = U Vᵀ − 2 u3 v3ᵀ``.
     """
     U, S, Vt = np.linalg.svd(M)
-    d = np.sign(_determinants(U) * _determinants(Vt))
-    d[d == 0.0] = 1.0  # U and V are orthogonal: only reached with NaN in M
-    U[:, :, 2] *= d[:, np.newaxis]
     C: Array = U @ Vt
+    d = np.sign(np.linalg.det(C))
+    flip = np.flatnonzero(d < 0.0)
+    if flip.size:
+        C[flip] -= 2.0 * U[flip, :, 2:] @ Vt[flip, 2:, :]
     return C, S, S[:, 1] + d * S[:, 2]
 
 

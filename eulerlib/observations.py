@@ -71,8 +71,9 @@ def _as_vector_sets(value: ArrayLike, name: str) -> Array:
     array = as_float_array(value, name)
     if array.ndim < 2 or array.shape[-1] != 3:
         raise ValueError(f"{name} must have shape (..., N, 3), got shape {array.shape}")
-    zero = np.flatnonzero(~np.any(array != 0.0, axis=-1))
-    if zero.size:
+    nonzero = array.any(axis=-1)
+    if not nonzero.all():
+        zero = np.flatnonzero(~nonzero)
         where = _index_text(array.shape[:-1], int(zero[0]))
         raise ValueError(f"{name}{where} is zero: a vector with no direction cannot be aligned")
     return array
@@ -171,74 +172,153 @@ def align_vectors(a: ArrayLike, b: ArrayLike, weights: ArrayLike | None = None) 
             f"a and b must hold as many vectors each, got {count} and {second.shape[-2]} "
             f"(shapes {first.shape} and {second.shape})"
         )
-    w = _as_weights(weights, count)
+    w = None if weights is None else _as_weights(weights, count)
+    if first.ndim == second.ndim == 2 and (w is None or (w.ndim == 1 and np.isfinite(w).all())):
+        if all(_ORDINARY[0] <= max(float(x.max()), -float(x.min())) <= _ORDINARY[1]
+               for x in ((first, second) if w is None else (first, second, w))):  # fmt: skip
+            return _one_problem(first, second, w)  # one problem of ordinary size: the short way
+    if w is None:
+        w = np.ones(count)
     lead = _problems_shape(first.shape[:-2], second.shape[:-2], w.shape[:-1])
     total = math.prod(lead)
-    A = np.broadcast_to(first, (*lead, count, 3)).reshape(total, count, 3)
-    Bv = np.broadcast_to(second, (*lead, count, 3)).reshape(total, count, 3)
-    W = np.broadcast_to(w, (*lead, count)).reshape(total, count)
+    A = _problems(first, lead, total, 2)
+    Bv = _problems(second, lead, total, 2)
+    W = np.ones((total, count)) if weights is None else _problems(w, lead, total, 1)
 
-    infinite = np.isinf(W)
-    primaries = np.count_nonzero(infinite, axis=1)
-    several = np.flatnonzero(primaries > 1)
-    if several.size:
-        raise ValueError(
-            f"weights{_index_text(lead, int(several[0]))} has {primaries[several[0]]} infinite "
-            "weights: only one vector can be aligned exactly"
-        )
-    finite_w = np.where(infinite, 0.0, W)
-    # scale every problem by powers of two: exact, and M = Σ w a bᵀ can neither overflow nor
-    # underflow; the rotation does not change
-    e_a, e_b = _exponents(A, (1, 2)), _exponents(Bv, (1, 2))
-    e_w = _exponents(finite_w, (1,))
-    e_w += e_w % 2  # even, so that its square root is a power of two too
-    A = np.ldexp(A, -e_a[:, None, None])
-    Bv = np.ldexp(Bv, -e_b[:, None, None])
-    finite_w = np.ldexp(finite_w, -e_w[:, None])
-    M = np.einsum("kn,kni,knj->kij", finite_w, A, Bv)
+    primaries = np.zeros(total, dtype=np.intp)
+    if weights is not None:
+        infinite = np.isinf(W)
+        if infinite.any():
+            primaries = np.count_nonzero(infinite, axis=1)
+            several = np.flatnonzero(primaries > 1)
+            if several.size:
+                raise ValueError(
+                    f"weights{_index_text(lead, int(several[0]))} has "
+                    f"{primaries[several[0]]} infinite weights: only one vector can be aligned "
+                    "exactly"
+                )
+            W = np.where(infinite, 0.0, W)
+    # Scale every problem by powers of two, so that M = Σ w a bᵀ and the residuals can neither
+    # overflow nor underflow: exact, and the rotation does not change. Inputs of ordinary size
+    # (everything between 2⁻²⁰⁰ and 2²⁰⁰) need none of it.
+    e_a = e_b = e_w = np.zeros(total, dtype=np.int32)
+    if not all(
+        _ORDINARY[0] <= max(float(x.max()), -float(x.min())) <= _ORDINARY[1] for x in (A, Bv, W)
+    ):
+        e_a, e_b = _exponents(A, (1, 2)), _exponents(Bv, (1, 2))
+        e_w = _exponents(W, (1,))
+        e_w += e_w % 2  # even, so that its square root is a power of two too
+        A = np.ldexp(A, -e_a[:, None, None])
+        Bv = np.ldexp(Bv, -e_b[:, None, None])
+        W = np.ldexp(W, -e_w[:, None])
+    M = np.einsum("kn,kni,knj->kij", W, A, Bv)
 
-    C = np.empty((total, 3, 3))
-    plain = np.flatnonzero(primaries == 0)
-    if plain.size:
-        C[plain], singular, margin = special_procrustes(M[plain])
-        largest = singular[:, 0]
-        empty = np.flatnonzero(largest == 0.0)
-        if empty.size:
-            raise ValueError(
-                f"a and b do not determine one rotation"
-                f"{_index_text(lead, int(plain[empty[0]]))}: every weight is zero"
-            )
-        flat = np.flatnonzero(~(margin > DEGENERATE * largest))
-        if flat.size:
-            _raise_degenerate(lead, int(plain[flat[0]]), singular[flat[0]])
-    with_primary = np.flatnonzero(primaries == 1)
-    if with_primary.size:
-        index = np.argmax(infinite[with_primary], axis=1)
-        pa = A[with_primary, index]
-        pb = Bv[with_primary, index]
-        pa /= lengths(pa.T)[:, None]
-        pb /= lengths(pb.T)[:, None]
-        C[with_primary], turning = turn_about_primary(pa, pb, M[with_primary])
-        # the secondary pairs' own size: Σ w |a| |b|, scaled as M is
-        size = np.einsum(
-            "kn,kn,kn->k",
-            finite_w[with_primary],
-            lengths(A[with_primary].reshape(-1, 3).T).reshape(-1, count),
-            lengths(Bv[with_primary].reshape(-1, 3).T).reshape(-1, count),
-        )
-        flat = np.flatnonzero(~(turning > DEGENERATE * size))
-        if flat.size:
-            raise ValueError(
-                f"a and b do not determine one rotation"
-                f"{_index_text(lead, int(with_primary[flat[0]]))}: the vectors with finite "
-                "weights are parallel to the one with the infinite weight (or there are none, "
-                "or their weights are zero), so any turn about it fits as well"
-            )
+    if not primaries.any():
+        C, singular, margin = special_procrustes(M)
+        _check_margins(lead, np.arange(total), singular, margin)
+    else:
+        C = np.empty((total, 3, 3))
+        plain = np.flatnonzero(primaries == 0)
+        if plain.size:
+            C[plain], singular, margin = special_procrustes(M[plain])
+            _check_margins(lead, plain, singular, margin)
+        with_primary = np.flatnonzero(primaries == 1)
+        C[with_primary] = _with_primary(lead, with_primary, A, Bv, W, M, infinite)
     C += 0.0  # no negative zeros
-    rssd = _root_sum_of_squares(C, A, Bv, e_b - e_a, finite_w)
-    # undo the scaling: the residuals were measured in units of 2**e_a, the weights in 2**e_w
-    rssd = np.ldexp(rssd, e_a + e_w // 2)
+    with np.errstate(over="ignore", under="ignore"):
+        # the residuals in units of 2**e_a, the weights in units of 2**e_w
+        turned = np.einsum("kij,knj->kni", C, Bv)
+        if e_a is not e_b:
+            turned = np.ldexp(turned, (e_b - e_a)[:, None, None])
+        residual = A - turned
+        rssd = np.sqrt(np.einsum("kn,kni,kni->k", W, residual, residual))
+        if e_a is not e_b:
+            rssd = np.ldexp(rssd, e_a + e_w // 2)
     return Alignment(C.reshape(*lead, 3, 3), rssd.reshape(lead))
+
+
+def _one_problem(a: Array, b: Array, w: Array | None) -> Alignment:
+    """One problem of ordinary size, as the general path solves it, in fewer numpy calls."""
+    M = (a.T if w is None else a.T * w) @ b
+    C, singular, margin = special_procrustes(M[np.newaxis])
+    _check_margins((), np.zeros(1, dtype=np.intp), singular, margin)
+    matrix = C[0] + 0.0
+    residual = a - b @ matrix.T
+    squares = residual * residual
+    total = squares.sum() if w is None else w @ squares.sum(axis=1)
+    return Alignment(matrix, np.sqrt(total))
+
+
+#: The range of sizes in which one problem is solved without scaling.
+_ORDINARY = (2.0**-200, 2.0**200)
+
+
+def _check_margins(
+    lead: tuple[int, ...], problems: NDArray[np.intp], singular: Array, margin: Array
+) -> None:
+    """Refuse the first problem whose margin says that it determines no single rotation."""
+    largest = singular[:, 0]
+    flat = np.flatnonzero(~(margin > DEGENERATE * largest))
+    if not flat.size:
+        return
+    where = _index_text(lead, int(problems[flat[0]]))
+    values = singular[flat[0]]
+    if values[0] == 0.0:
+        reason = "every weight is zero"
+    elif values[1] <= DEGENERATE * values[0]:
+        reason = (
+            "the weighted vectors are all parallel (or only one has a weight), so any turn "
+            "about their direction fits as well"
+        )
+    else:
+        reason = (
+            "two rotations fit equally well (the vectors of a are turned like a mirror image "
+            "of those of b)"
+        )
+    raise ValueError(f"a and b do not determine one rotation{where}: {reason}")
+
+
+def _with_primary(
+    lead: tuple[int, ...],
+    problems: NDArray[np.intp],
+    A: Array,
+    Bv: Array,
+    W: Array,
+    M: Array,
+    infinite: NDArray[np.bool_],
+) -> Array:
+    """The rotations of the problems with one infinite weight (TRIAD and its generalization)."""
+    count = A.shape[1]
+    index = np.argmax(infinite[problems], axis=1)
+    pa = A[problems, index]
+    pb = Bv[problems, index]
+    pa /= lengths(pa.T)[:, None]
+    pb /= lengths(pb.T)[:, None]
+    C, turning = turn_about_primary(pa, pb, M[problems])
+    # the secondary pairs' own size, Σ w |a| |b|, scaled as M is
+    size = np.einsum(
+        "kn,kn,kn->k",
+        W[problems],
+        lengths(A[problems].reshape(-1, 3).T).reshape(-1, count),
+        lengths(Bv[problems].reshape(-1, 3).T).reshape(-1, count),
+    )
+    flat = np.flatnonzero(~(turning > DEGENERATE * size))
+    if flat.size:
+        raise ValueError(
+            f"a and b do not determine one rotation{_index_text(lead, int(problems[flat[0]]))}: "
+            "the vectors with finite weights are parallel to the one with the infinite weight "
+            "(or there are none, or their weights are zero), so any turn about it fits as well"
+        )
+    return C
+
+
+def _problems(values: Array, lead: tuple[int, ...], total: int, axes: int) -> Array:
+    """``values`` with its leading axes (all but the last ``axes``) broadcast to ``lead`` and
+    flattened into one."""
+    tail = values.shape[values.ndim - axes :]
+    if values.shape[: values.ndim - axes] == lead:
+        return values.reshape(total, *tail)
+    return np.broadcast_to(values, (*lead, *tail)).reshape(total, *tail)
 
 
 def _problems_shape(*shapes: tuple[int, ...]) -> tuple[int, ...]:
@@ -249,28 +329,3 @@ def _problems_shape(*shapes: tuple[int, ...]) -> tuple[int, ...]:
         raise ValueError(
             f"the leading shapes of {words} do not broadcast together (each is (..., N))"
         ) from None
-
-
-def _raise_degenerate(lead: tuple[int, ...], problem: int, singular: Array) -> None:
-    if singular[1] <= DEGENERATE * singular[0]:
-        reason = (
-            "the weighted vectors are all parallel (or only one has a weight), so any turn "
-            "about their direction fits as well"
-        )
-    else:
-        reason = (
-            "two rotations fit equally well (the vectors of a are turned like a mirror image "
-            "of those of b)"
-        )
-    raise ValueError(f"a and b do not determine one rotation{_index_text(lead, problem)}: {reason}")
-
-
-def _root_sum_of_squares(
-    C: Array, A: Array, Bv: Array, shift: NDArray[np.int32], w: Array
-) -> Array:
-    """``sqrt(Σ w |A − C Bv 2**shift|²)`` per problem, without overflow for moderate shifts."""
-    with np.errstate(over="ignore", under="ignore"):
-        turned = np.ldexp(np.einsum("kij,knj->kni", C, Bv), shift[:, None, None])
-        residual = A - turned
-        total: Array = np.sqrt(np.einsum("kn,kni,kni->k", w, residual, residual))
-    return total

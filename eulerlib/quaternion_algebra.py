@@ -53,11 +53,18 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._algebra_kernels import (
+    Quad,
+    exp_one,
     exponentials,
     hamilton_product,
+    inverse_one,
     inverses,
+    log_one,
     logarithms,
+    moderate,
+    power_one,
     powers,
+    product_one,
 )
 from eulerlib._blocks import block_slices
 from eulerlib._broadcast import Selection, broadcast_blocks, broadcast_shape, selected_index
@@ -95,6 +102,21 @@ def _rows(stored: Array, first: bool) -> Array:
 def _write(out: Array, rows: Array, first: bool) -> None:
     """Rows w, x, y, z ``(4, n)`` into stored quaternions ``out`` ``(n, 4)``, no ``-0.0``."""
     np.add(rows[_STORED[first]].T, 0.0, out=out)
+
+
+def _one(quaternion: Array, first: bool) -> Quad | None:
+    """One stored quaternion ``(4,)`` as Python floats ``(w, x, y, z)``, when it is of moderate
+    size (:func:`eulerlib._algebra_kernels.moderate`); else None, for the block functions."""
+    values = quaternion.tolist()
+    if not moderate(values):
+        return None
+    w, x, y, z = (values[i] for i in _ROWS[first])
+    return w, x, y, z
+
+
+def _stored_one(result: Quad, first: bool) -> Array:
+    """``(w, x, y, z)`` as a stored quaternion, without ``-0.0``."""
+    return np.array([result[i] + 0.0 for i in _STORED[first]])
 
 
 def _refuse_zero(
@@ -153,6 +175,10 @@ def quaternion_multiply(
     """
     first = check_flag(scalar_first, "scalar_first")
     left, right = _as_quaternions(p, "p"), _as_quaternions(q, "q")
+    if left.ndim == 1 and right.ndim == 1:
+        one_p, one_q = _one(left, first), _one(right, first)
+        if one_p is not None and one_q is not None:
+            return _stored_one(product_one(one_p, one_q), first)
     lead_p, lead_q = left.shape[:-1], right.shape[:-1]
     shape = broadcast_shape({"p": lead_p, "q": lead_q})
     flat_p, flat_q = left.reshape(-1, 4), right.reshape(-1, 4)
@@ -245,6 +271,8 @@ def quaternion_inverse(q: ArrayLike, *, scalar_first: bool = False) -> NDArray[n
     """
     first = check_flag(scalar_first, "scalar_first")
     quaternions = _as_quaternions(q, "q")
+    if quaternions.ndim == 1 and (one := _one(quaternions, first)) is not None and any(one):
+        return _stored_one(inverse_one(one), first)
     lead = quaternions.shape[:-1]
     flat = quaternions.reshape(-1, 4)
     out = np.empty(flat.shape)
@@ -304,6 +332,12 @@ def quaternion_exp(v: ArrayLike, *, scalar_first: bool = False) -> NDArray[np.fl
     if values.ndim == 0 or values.shape[-1] not in (3, 4):
         raise ValueError(f"v must have shape (..., 3) or (..., 4), got shape {values.shape}")
     pure = values.shape[-1] == 3
+    if values.ndim == 1 and moderate(items := values.tolist()):
+        if pure:
+            return _stored_one(exp_one(0.0, items), first)
+        w, x, y, z = (items[i] for i in _ROWS[first])
+        if w < 700.0:  # e^w far from float64's limit
+            return _stored_one(exp_one(w, [x, y, z]), first)
     flat = values.reshape(-1, values.shape[-1])
     out = np.empty((flat.shape[0], 4))
     for block in block_slices(flat.shape[0]):
@@ -361,6 +395,8 @@ def quaternion_log(q: ArrayLike, *, scalar_first: bool = False) -> NDArray[np.fl
     """
     first = check_flag(scalar_first, "scalar_first")
     quaternions = _as_quaternions(q, "q")
+    if quaternions.ndim == 1 and (one := _one(quaternions, first)) is not None and any(one):
+        return _stored_one(log_one(one), first)
     lead = quaternions.shape[:-1]
     flat = quaternions.reshape(-1, 4)
     out = np.empty(flat.shape)
@@ -421,6 +457,12 @@ def quaternion_power(
     first = check_flag(scalar_first, "scalar_first")
     quaternions = _as_quaternions(q, "q")
     exponents = as_float_array(t, "t")
+    if quaternions.ndim == 1 and exponents.ndim == 0:
+        one, power = _one(quaternions, first), float(exponents)
+        if one is not None and any(one):
+            exponent = math.frexp(max(abs(value) for value in one))[1]
+            if abs(power) <= 250.0 and abs(power * exponent) <= 250.0:  # |q|^t is moderate
+                return _stored_one(power_one(one, power), first)
     lead = quaternions.shape[:-1]
     shape = broadcast_shape({"q": lead, "t": exponents.shape})
     flat_q, flat_t = quaternions.reshape(-1, 4), exponents.reshape(-1)

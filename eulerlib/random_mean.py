@@ -48,6 +48,7 @@ import operator
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib._algebra_kernels import matrix_one
 from eulerlib._blocks import block_slices
 from eulerlib._procrustes_kernels import special_procrustes
 from eulerlib._quaternion_kernels import quaternions_to_entries
@@ -150,6 +151,10 @@ def random_rotations(
     shape = _as_shape(n)
     generator = _as_generator(rng)
     total = math.prod(shape)
+    if total == 1:  # one rotation: the same numbers and formulas, without numpy's overheads
+        x, y, z, w = generator.normal(size=4).tolist()
+        entries = matrix_one((w, x, y, z)) if any((w, x, y, z)) else np.eye(3).reshape(9)
+        return np.array(entries).reshape(*shape, 3, 3)
     out = np.empty((total, 9))
     for block in block_slices(total):
         stored = generator.normal(size=(block.stop - block.start, 4))

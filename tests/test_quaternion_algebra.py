@@ -374,3 +374,36 @@ def test_inputs_are_never_modified_and_nothing_is_printed(capsys, rng) -> None:
     for original, now in zip(before, (p, q, t), strict=True):
         assert_array_equal(now, original)
     assert capsys.readouterr() == ("", "")
+
+
+def test_one_quaternion_is_computed_as_many_are(rng) -> None:
+    """A single quaternion takes a path of its own (Python floats); it agrees with the block
+    path to the last bit in the arithmetic, within a unit for sines, cosines and logarithms."""
+    q = np.concatenate([rng.normal(size=(50, 4)), rng.normal(size=(10, 4)) * 1e-200,
+                        [[0.0, 0.0, 0.0, -2.0], [1e-300, 0.0, 0.0, 1.0]]])  # fmt: skip
+    p = rng.normal(size=(len(q), 4))
+    t = 0.7
+    many = {
+        "multiply": quaternion_multiply(p, q),
+        "inverse": quaternion_inverse(q),
+        "exp": quaternion_exp(q),
+        "exp of vectors": quaternion_exp(q[:, :3]),
+        "log": quaternion_log(q),
+        "power": quaternion_power(q, t),
+    }
+    for k in range(len(q)):
+        one = {
+            "multiply": quaternion_multiply(p[k], q[k]),
+            "inverse": quaternion_inverse(q[k]),
+            "exp": quaternion_exp(q[k]),
+            "exp of vectors": quaternion_exp(q[k, :3]),
+            "log": quaternion_log(q[k]),
+            "power": quaternion_power(q[k], t),
+        }
+        for name, value in one.items():
+            assert value.shape == (4,)
+            if name in ("multiply", "inverse"):
+                assert_array_equal(value, many[name][k], err_msg=name)
+            else:
+                scale = np.abs(many[name][k]).max()
+                assert_allclose(value, many[name][k], rtol=0, atol=2 * EPS * scale, err_msg=name)

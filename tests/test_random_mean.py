@@ -247,3 +247,12 @@ def test_inputs_are_never_modified_and_nothing_is_printed(capsys, rng) -> None:
     for original, now in zip(before, (R, w), strict=True):
         assert_array_equal(now, original)
     assert capsys.readouterr() == ("", "")
+
+
+def test_one_rotation_is_the_first_of_many() -> None:
+    # one rotation takes a path of its own, with the same numbers and the same arithmetic
+    for seed in range(20):
+        assert_array_equal(random_rotations((), rng=seed), random_rotations(1, rng=seed)[0])
+        assert_array_equal(
+            random_rotations((1, 1), rng=seed)[0, 0], random_rotations(1, rng=seed)[0]
+        )
