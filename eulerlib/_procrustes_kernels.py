@@ -10,6 +10,8 @@ input; the public modules did that once.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -79,3 +81,53 @@ def turn_about_primary(a: Array, b: Array, M: Array) -> tuple[Array, Array]:
     X[:, 1, 2] = -X[:, 2, 1]
     C: Array = Fa @ X @ np.swapaxes(Fb, -1, -2)
     return C, np.hypot(sine, cosine)
+
+
+# --- one problem at a time ------------------------------------------------------------------------
+#
+# One small problem spends most of its time in numpy's per-call overhead. These do the same
+# computation for one matrix ``M`` (3, 3) with fewer numpy calls, the 3×3 bookkeeping in Python.
+
+
+def procrustes_one(M: Array) -> tuple[Array, list[float], float]:
+    """:func:`special_procrustes` of one matrix: ``C``, the singular values, the margin."""
+    U, S, Vt = np.linalg.svd(M)
+    C: Array = U @ Vt
+    (a, b, c), (d, e, f), (g, h, i) = C.tolist()
+    s1, s2, s3 = S.tolist()
+    if a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g) < 0.0:
+        C -= 2.0 * np.outer(U[:, 2], Vt[2])
+        return C, [s1, s2, s3], s2 - s3
+    return C, [s1, s2, s3], s2 + s3
+
+
+def _frame_one(n: list[float]) -> list[list[float]]:
+    """:func:`orthonormal_frames` of one unit vector, as rows of the matrix."""
+    x, y, z = n
+    s = math.copysign(1.0, z)
+    c = -1.0 / (s + z)
+    xy = c * x * y
+    return [[x, 1.0 + s * c * x * x, xy], [y, s * xy, s + c * y * y], [z, -s * x, -y]]
+
+
+def _times(P: list[list[float]], Q: list[list[float]]) -> list[list[float]]:
+    return [[sum(P[i][k] * Q[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
+
+
+def _transposed(P: list[list[float]]) -> list[list[float]]:
+    return [[P[j][i] for j in range(3)] for i in range(3)]
+
+
+def turn_about_primary_one(
+    a: list[float], b: list[float], M: list[list[float]]
+) -> tuple[Array, float]:
+    """:func:`turn_about_primary` of one problem, in Python floats."""
+    Fa, Fb = _frame_one(a), _frame_one(b)
+    N = _times(_times(_transposed(Fa), M), Fb)
+    sine = N[2][1] - N[1][2]
+    cosine = N[1][1] + N[2][2]
+    phi = math.atan2(sine, cosine)
+    co, si = math.cos(phi), math.sin(phi)
+    X = [[1.0, 0.0, 0.0], [0.0, co, -si], [0.0, si, co]]
+    C = np.array(_times(_times(Fa, X), _transposed(Fb)))
+    return C, math.hypot(sine, cosine)

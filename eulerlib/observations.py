@@ -42,7 +42,12 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._length_kernels import lengths
-from eulerlib._procrustes_kernels import special_procrustes, turn_about_primary
+from eulerlib._procrustes_kernels import (
+    procrustes_one,
+    special_procrustes,
+    turn_about_primary,
+    turn_about_primary_one,
+)
 from eulerlib._validation import _index_text, as_float_array
 
 __all__ = ["Alignment", "align_vectors"]
@@ -173,9 +178,11 @@ def align_vectors(a: ArrayLike, b: ArrayLike, weights: ArrayLike | None = None) 
             f"(shapes {first.shape} and {second.shape})"
         )
     w = None if weights is None else _as_weights(weights, count)
-    if first.ndim == second.ndim == 2 and (w is None or (w.ndim == 1 and np.isfinite(w).all())):
-        if all(_ORDINARY[0] <= max(float(x.max()), -float(x.min())) <= _ORDINARY[1]
-               for x in ((first, second) if w is None else (first, second, w))):  # fmt: skip
+    if first.ndim == second.ndim == 2 and (w is None or w.ndim == 1):
+        sizes = [max(float(x.max()), -float(x.min())) for x in (first, second)]
+        if w is not None:
+            sizes.append(float(np.max(w, where=w < math.inf, initial=0.0)))
+        if all(_ORDINARY[0] <= size <= _ORDINARY[1] for size in sizes):
             return _one_problem(first, second, w)  # one problem of ordinary size: the short way
     if w is None:
         w = np.ones(count)
@@ -239,14 +246,40 @@ def align_vectors(a: ArrayLike, b: ArrayLike, weights: ArrayLike | None = None) 
 
 def _one_problem(a: Array, b: Array, w: Array | None) -> Alignment:
     """One problem of ordinary size, as the general path solves it, in fewer numpy calls."""
-    M = (a.T if w is None else a.T * w) @ b
-    C, singular, margin = special_procrustes(M[np.newaxis])
-    _check_margins((), np.zeros(1, dtype=np.intp), singular, margin)
-    matrix = C[0] + 0.0
-    residual = a - b @ matrix.T
-    squares = residual * residual
-    total = squares.sum() if w is None else w @ squares.sum(axis=1)
-    return Alignment(matrix, np.sqrt(total))
+    problem = np.zeros(1, dtype=np.intp)
+    if w is None or not (infinite := np.isinf(w)).any():
+        M = (a.T if w is None else a.T * w) @ b
+        C, singular, margin = procrustes_one(M)
+        if not margin > DEGENERATE * singular[0]:
+            _check_margins((), problem, np.array([singular]), np.array([margin]))
+    else:
+        if np.count_nonzero(infinite) > 1:
+            raise ValueError(
+                f"weights has {np.count_nonzero(infinite)} infinite weights: only one vector "
+                "can be aligned exactly"
+            )
+        w = np.where(infinite, 0.0, w)
+        primary = int(np.argmax(infinite))
+        pa, pb = a[primary].tolist(), b[primary].tolist()
+        size_a, size_b = math.sqrt(sum(v * v for v in pa)), math.sqrt(sum(v * v for v in pb))
+        M = (a.T * w) @ b
+        C, turning = turn_about_primary_one(
+            [v / size_a for v in pa], [v / size_b for v in pb], M.tolist()
+        )
+        size = float(w @ np.sqrt(np.einsum("ij,ij->i", a, a) * np.einsum("ij,ij->i", b, b)))
+        if not turning > DEGENERATE * size:
+            raise ValueError(f"a and b do not determine one rotation: {_NOT_ABOUT_PRIMARY}")
+    C += 0.0  # no negative zeros
+    residual = a - b @ C.T
+    if w is None:
+        return Alignment(C, np.sqrt(np.vdot(residual, residual)))
+    return Alignment(C, np.sqrt(w @ np.einsum("ij,ij->i", residual, residual)))
+
+
+_NOT_ABOUT_PRIMARY = (
+    "the vectors with finite weights are parallel to the one with the infinite weight (or "
+    "there are none, or their weights are zero), so any turn about it fits as well"
+)
 
 
 #: The range of sizes in which one problem is solved without scaling.
@@ -304,11 +337,8 @@ def _with_primary(
     )
     flat = np.flatnonzero(~(turning > DEGENERATE * size))
     if flat.size:
-        raise ValueError(
-            f"a and b do not determine one rotation{_index_text(lead, int(problems[flat[0]]))}: "
-            "the vectors with finite weights are parallel to the one with the infinite weight "
-            "(or there are none, or their weights are zero), so any turn about it fits as well"
-        )
+        where = _index_text(lead, int(problems[flat[0]]))
+        raise ValueError(f"a and b do not determine one rotation{where}: {_NOT_ABOUT_PRIMARY}")
     return C
 
 

@@ -50,7 +50,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from eulerlib._algebra_kernels import matrix_one
 from eulerlib._blocks import block_slices
-from eulerlib._procrustes_kernels import special_procrustes
+from eulerlib._procrustes_kernels import procrustes_one, special_procrustes
 from eulerlib._quaternion_kernels import quaternions_to_entries
 from eulerlib._validation import (
     ROTATION_ATOL,
@@ -251,13 +251,18 @@ def mean_rotation(
             f"the leading shapes of R {matrices.shape[:-3]} and weights {w.shape[:-1]} do not "
             "broadcast together (R is (..., N, 3, 3), weights (..., N))"
         ) from None
-    largest_weight = np.max(w, axis=-1, initial=0.0, keepdims=True)
-    w = np.ldexp(w, -np.frexp(largest_weight)[1])
+    if weights is not None:  # weights of any size: scaled by a power of two, exactly
+        largest_weight = np.max(w, axis=-1, initial=0.0, keepdims=True)
+        w = np.ldexp(w, -np.frexp(largest_weight)[1])
     if matrices.ndim == 3 and w.ndim == 1:  # one set: a matrix-vector product
         S = (w @ matrices.reshape(count, 9)).reshape(1, 3, 3)
     else:
         S = np.einsum("...n,...nij->...ij", w, matrices).reshape(-1, 3, 3)
-    M, singular, margin = special_procrustes(S)
+    if S.shape[0] == 1:  # one set: the same computation in fewer numpy calls
+        C, values, gap = procrustes_one(S[0])
+        M, singular, margin = C[np.newaxis], np.array([values]), np.array([gap])
+    else:
+        M, singular, margin = special_procrustes(S)
     empty = np.flatnonzero(singular[:, 0] == 0.0)
     if empty.size:
         raise ValueError(
