@@ -117,7 +117,7 @@ def test_against_mpmath_at_every_scale(scale: float, rng) -> None:
             exact = mp_wahba(a, b, w)
             found = align_vectors(a * scale, b / scale, w * scale).matrix
             worst = max(worst, mp.absolute_ulps(found, exact))
-    assert worst <= 16.0, worst
+    assert worst <= 32.0, worst
 
 
 @settings(max_examples=100, deadline=None)
