@@ -506,6 +506,14 @@ def peak_bytes(call: Callable[[], object]) -> int:
             lambda a, R, q: eulerlib.integrate_angular_velocity(R, a, a[:, 0]),
             72,
         ),
+        ("quaternion_multiply", lambda a, R, q: eulerlib.quaternion_multiply(q, q[::-1]), 32),
+        ("quaternion_conjugate", lambda a, R, q: eulerlib.quaternion_conjugate(q), 32),
+        ("quaternion_inverse", lambda a, R, q: eulerlib.quaternion_inverse(q), 32),
+        ("quaternion_exp", lambda a, R, q: eulerlib.quaternion_exp(a), 32),
+        ("quaternion_log", lambda a, R, q: eulerlib.quaternion_log(q), 32),
+        ("quaternion_power", lambda a, R, q: eulerlib.quaternion_power(q, a[:, 0]), 32),
+        ("random_rotations", lambda a, R, q: eulerlib.random_rotations(len(a), rng=1), 72),
+        ("mean_rotation", lambda a, R, q: eulerlib.mean_rotation(R), 0),
     ],
 )
 def test_no_temporary_as_large_as_the_input(
