@@ -208,10 +208,11 @@ def align_vectors(a: ArrayLike, b: ArrayLike, weights: ArrayLike | None = None) 
     # Scale every problem by powers of two, so that M = Σ w a bᵀ and the residuals can neither
     # overflow nor underflow: exact, and the rotation does not change. Inputs of ordinary size
     # (everything between 2⁻²⁰⁰ and 2²⁰⁰) need none of it.
-    e_a = e_b = e_w = np.zeros(total, dtype=np.int32)
-    if not all(
+    scaled = not all(
         _ORDINARY[0] <= max(float(x.max()), -float(x.min())) <= _ORDINARY[1] for x in (A, Bv, W)
-    ):
+    )
+    e_a = e_b = e_w = np.zeros(total, dtype=np.int32)
+    if scaled:
         e_a, e_b = _exponents(A, (1, 2)), _exponents(Bv, (1, 2))
         e_w = _exponents(W, (1,))
         e_w += e_w % 2  # even, so that its square root is a power of two too
@@ -235,11 +236,11 @@ def align_vectors(a: ArrayLike, b: ArrayLike, weights: ArrayLike | None = None) 
     with np.errstate(over="ignore", under="ignore"):
         # the residuals in units of 2**e_a, the weights in units of 2**e_w
         turned = np.einsum("kij,knj->kni", C, Bv)
-        if e_a is not e_b:
+        if scaled:
             turned = np.ldexp(turned, (e_b - e_a)[:, None, None])
         residual = A - turned
         rssd = np.sqrt(np.einsum("kn,kni,kni->k", W, residual, residual))
-        if e_a is not e_b:
+        if scaled:
             rssd = np.ldexp(rssd, e_a + e_w // 2)
     return Alignment(C.reshape(*lead, 3, 3), rssd.reshape(lead))
 
