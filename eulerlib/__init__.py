@@ -12,6 +12,14 @@ vectors (:func:`rotvec_to_matrix`, :func:`matrix_to_rotvec`) and unit quaternion
 (:func:`quaternion_to_matrix`, :func:`matrix_to_quaternion`, :func:`euler_to_quaternion`,
 :func:`quaternion_to_euler`, stored as SciPy stores them); :func:`rotation_angle` and
 :func:`angle_between` measure rotations, and :func:`slerp` interpolates between them.
+Quaternion algebra in Hamilton's convention (:func:`quaternion_multiply`,
+:func:`quaternion_conjugate`, :func:`quaternion_inverse`, :func:`quaternion_exp`,
+:func:`quaternion_log`, :func:`quaternion_power`) works on quaternions of any length.
+
+Attitude from what sensors see: :func:`align_vectors` solves Wahba's problem (the rotation
+that best maps reference directions onto observed ones, TRIAD included);
+:func:`random_rotations` draws uniformly distributed rotations and :func:`mean_rotation`
+averages rotations.
 
 Rotations in motion: :func:`euler_rates_to_angular_velocity` and
 :func:`angular_velocity_to_euler_rates` convert between Euler-angle rates and angular velocity
@@ -69,6 +77,7 @@ from eulerlib.named import (
     matrix_to_yaw_pitch_roll,
     yaw_pitch_roll_to_matrix,
 )
+from eulerlib.observations import Alignment, align_vectors
 from eulerlib.operations import (
     compose,
     invert,
@@ -82,6 +91,15 @@ from eulerlib.quaternion import (
     quaternion_to_euler,
     quaternion_to_matrix,
 )
+from eulerlib.quaternion_algebra import (
+    quaternion_conjugate,
+    quaternion_exp,
+    quaternion_inverse,
+    quaternion_log,
+    quaternion_multiply,
+    quaternion_power,
+)
+from eulerlib.random_mean import mean_rotation, random_rotations
 from eulerlib.sequences import (
     ALL_SEQUENCES,
     PROPER_EULER,
@@ -102,6 +120,7 @@ __all__ = [
     "REPAIR_LIMIT",
     "ROTATION_ATOL",
     "TAIT_BRYAN",
+    "Alignment",
     "AxisAngle",
     "Convention",
     "GimbalLockStatus",
@@ -109,6 +128,7 @@ __all__ = [
     "HeadingAttitudeBank",
     "Sequence",
     "YawPitchRoll",
+    "align_vectors",
     "angle_between",
     "angular_velocity_to_euler_rates",
     "axis_angle_to_matrix",
@@ -132,11 +152,19 @@ __all__ = [
     "matrix_to_quaternion",
     "matrix_to_rotvec",
     "matrix_to_yaw_pitch_roll",
+    "mean_rotation",
     "nearest_rotation",
     "parse_axis",
     "parse_sequence",
+    "quaternion_conjugate",
+    "quaternion_exp",
+    "quaternion_inverse",
+    "quaternion_log",
+    "quaternion_multiply",
+    "quaternion_power",
     "quaternion_to_euler",
     "quaternion_to_matrix",
+    "random_rotations",
     "rot_x",
     "rot_y",
     "rot_z",

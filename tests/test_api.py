@@ -47,6 +47,7 @@ FUNCTIONS = {name: f for name, f in PUBLIC.items() if inspect.isfunction(f)}
 R0 = Rotation.from_euler("ZYX", [0.3, 0.2, 0.1]).as_matrix()
 Q0 = Rotation.from_euler("ZYX", [0.3, 0.2, 0.1]).as_quat()
 VALID_CALLS: dict[str, tuple[tuple[Any, ...], dict[str, Any]]] = {
+    "align_vectors": (([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]], [[0.0, 1.0, 0.0], [1.0, 0.0, 0.0]]), {}),
     "angle_between": ((R0, R0.T), {}),
     "angular_velocity_to_euler_rates": (([0.1, 0.2, 0.3], [1.0, 2.0, 3.0]), {}),
     "axis_angle_to_matrix": (([0.0, 0.0, 1.0], 0.5), {}),
@@ -70,11 +71,19 @@ VALID_CALLS: dict[str, tuple[tuple[Any, ...], dict[str, Any]]] = {
     "matrix_to_rotvec": ((R0,), {}),
     "matrix_to_heading_attitude_bank": ((R0,), {}),
     "matrix_to_yaw_pitch_roll": ((R0,), {}),
+    "mean_rotation": ((np.stack([R0, R0.T]),), {}),
     "nearest_rotation": ((R0,), {}),
     "parse_axis": (("x",), {}),
     "parse_sequence": (("ZYX",), {}),
+    "quaternion_conjugate": ((Q0,), {}),
+    "quaternion_exp": (([0.1, 0.2, 0.3],), {}),
+    "quaternion_inverse": ((Q0,), {}),
+    "quaternion_log": ((Q0,), {}),
+    "quaternion_multiply": ((Q0, Q0), {}),
+    "quaternion_power": ((Q0, 0.5), {}),
     "quaternion_to_euler": ((Q0,), {}),
     "quaternion_to_matrix": ((Q0,), {}),
+    "random_rotations": ((3,), {"rng": 1}),
     "rot_x": ((0.5,), {}),
     "rot_y": ((0.5,), {}),
     "rot_z": ((0.5,), {}),
@@ -505,6 +514,14 @@ def peak_bytes(call: Callable[[], object]) -> int:
             lambda a, R, q: eulerlib.integrate_angular_velocity(R, a, a[:, 0]),
             72,
         ),
+        ("quaternion_multiply", lambda a, R, q: eulerlib.quaternion_multiply(q, q[::-1]), 32),
+        ("quaternion_conjugate", lambda a, R, q: eulerlib.quaternion_conjugate(q), 32),
+        ("quaternion_inverse", lambda a, R, q: eulerlib.quaternion_inverse(q), 32),
+        ("quaternion_exp", lambda a, R, q: eulerlib.quaternion_exp(a), 32),
+        ("quaternion_log", lambda a, R, q: eulerlib.quaternion_log(q), 32),
+        ("quaternion_power", lambda a, R, q: eulerlib.quaternion_power(q, a[:, 0]), 32),
+        ("random_rotations", lambda a, R, q: eulerlib.random_rotations(len(a), rng=1), 72),
+        ("mean_rotation", lambda a, R, q: eulerlib.mean_rotation(R), 0),
     ],
 )
 def test_no_temporary_as_large_as_the_input(

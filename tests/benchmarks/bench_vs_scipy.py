@@ -13,6 +13,14 @@ normalize every quaternion; ``slerp`` checks both ends, as ``Rotation.from_matri
 SciPy's ``Slerp`` interpolates; one step of ``integrate_angular_velocity`` checks the attitudes,
 as ``Rotation.from_matrix`` does before the product with ``Rotation.from_rotvec``.
 
+The quaternion algebra is timed against SciPy's ``Rotation`` doing the same: ``*`` for the
+product, ``inv`` for the conjugate and the inverse, ``from_rotvec`` for the exponential of half a
+rotation vector, ``as_rotvec`` for the logarithm and ``**`` for the power; ``random_rotations``
+against ``Rotation.random`` and ``mean_rotation`` against ``Rotation.mean`` (both checking the
+matrices). ``align_vectors`` solves one problem per call, as SciPy's does, and is timed per call
+on typical sizes, as ``mean_rotation`` is on small sets; a last table times one call on one
+rotation for each of the new functions.
+
 SciPy has no conversion between Euler-angle rates and angular velocity. Those rows are timed
 against a plain NumPy baseline written here, loop-free: the Jacobian built with ``np.stack``
 from the three elementary rotations, applied with ``np.einsum`` and inverted with
@@ -41,6 +49,18 @@ def best_time(function: Callable[[], object], repeats: int) -> float:
         start = time.perf_counter()
         function()
         times.append(time.perf_counter() - start)
+    return min(times)
+
+
+def per_call_time(function: Callable[[], object], repeats: int, calls: int = 300) -> float:
+    """Shortest mean time of one call, over ``repeats`` runs of ``calls`` calls, in seconds."""
+    function()
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        for _ in range(calls):
+            function()
+        times.append((time.perf_counter() - start) / calls)
     return min(times)
 
 
@@ -118,6 +138,8 @@ def main(argv: list[str] | None = None) -> None:
     key_times, pair_times = np.arange(2 * n), 2 * np.arange(n) + fractions
     rates = rng.normal(size=(n, 3))  # angle rates, and angular velocities in the body
     dt = 1 / 256
+    others = Rotation.random(n, rng=rng).as_quat()
+    half_rotvecs = rotvecs / 2
 
     # the two libraries must agree on what they compute before their speed means anything
     assert np.allclose(eulerlib.euler_to_matrix(angles, seq), rotation.as_matrix(), atol=1e-12)
@@ -149,6 +171,20 @@ def main(argv: list[str] | None = None) -> None:
         (Rotation.from_matrix(R) * Rotation.from_rotvec(rates * dt)).as_matrix(),
         atol=1e-12,
     )
+    scipy_product = (Rotation.from_quat(quaternions) * Rotation.from_quat(others)).as_quat()
+    assert np.allclose(eulerlib.quaternion_multiply(quaternions, others), scipy_product)
+    assert np.allclose(eulerlib.quaternion_inverse(quaternions), rotation.inv().as_quat())
+    assert np.allclose(eulerlib.quaternion_exp(half_rotvecs), rotation.as_quat(canonical=True))
+    canonical = rotation.as_quat(canonical=True)  # w ≥ 0: the log and power take the short way
+    assert np.allclose(eulerlib.quaternion_log(canonical)[:, :3], rotvecs / 2)
+    assert np.allclose(
+        eulerlib.quaternion_power(canonical, 0.3), (Rotation.from_quat(canonical) ** 0.3).as_quat()
+    )
+    assert np.allclose(
+        eulerlib.random_rotations(1000, rng=5), Rotation.random(1000, rng=5).as_matrix()
+    )
+    assert np.allclose(eulerlib.mean_rotation(R), rotation.mean().as_matrix())
+
     omega = eulerlib.euler_rates_to_angular_velocity(angles, rates, seq)
     assert np.allclose(omega, baseline_rates_to_omega(angles, rates, seq), atol=1e-12)
     away = np.abs(eulerlib.gimbal_lock_status(R, seq).distance) > 1e-3  # well-conditioned
@@ -243,6 +279,108 @@ def main(argv: list[str] | None = None) -> None:
             lambda: eulerlib.integrate_angular_velocity(R, rates, dt),
             lambda: (Rotation.from_matrix(R) * Rotation.from_rotvec(rates * dt)).as_matrix(),
         ),
+        (
+            "quaternion multiply",
+            lambda: eulerlib.quaternion_multiply(quaternions, others),
+            lambda: (Rotation.from_quat(quaternions) * Rotation.from_quat(others)).as_quat(),
+        ),
+        (
+            "quaternion conjugate",
+            lambda: eulerlib.quaternion_conjugate(quaternions),
+            lambda: Rotation.from_quat(quaternions).inv().as_quat(),
+        ),
+        (
+            "quaternion inverse",
+            lambda: eulerlib.quaternion_inverse(quaternions),
+            lambda: Rotation.from_quat(quaternions).inv().as_quat(),
+        ),
+        (
+            "quaternion exp",
+            lambda: eulerlib.quaternion_exp(half_rotvecs),
+            lambda: Rotation.from_rotvec(rotvecs).as_quat(),
+        ),
+        (
+            "quaternion log",
+            lambda: eulerlib.quaternion_log(quaternions),
+            lambda: Rotation.from_quat(quaternions).as_rotvec() / 2,
+        ),
+        (
+            "quaternion power",
+            lambda: eulerlib.quaternion_power(quaternions, 0.3),
+            lambda: (Rotation.from_quat(quaternions) ** 0.3).as_quat(),
+        ),
+        (
+            "random rotations",
+            lambda: eulerlib.random_rotations(n, rng=1),
+            lambda: Rotation.random(n, rng=1).as_matrix(),
+        ),
+        (
+            "mean rotation, n rotations",
+            lambda: eulerlib.mean_rotation(R),
+            lambda: Rotation.from_matrix(R).mean().as_matrix(),
+        ),
+    ]
+    # per call, on the sizes these are called with
+    pairs = {count: rng.normal(size=(2, count, 3)) for count in (2, 10, 1000)}
+    sets = {count: R[:count] for count in (10, 1000)}
+    one_q, other_q, one_v = quaternions[0], others[0], half_rotvecs[0]
+    per_call: list[tuple[str, Callable[[], object], Callable[[], object]]] = [
+        *(
+            (
+                f"align_vectors, {count} pairs",
+                lambda a=a, b=b: eulerlib.align_vectors(a, b),
+                lambda a=a, b=b: Rotation.align_vectors(a, b),
+            )
+            for count, (a, b) in pairs.items()
+        ),
+        (
+            "align_vectors, TRIAD (inf)",
+            lambda: eulerlib.align_vectors(*pairs[2], [np.inf, 1.0]),
+            lambda: Rotation.align_vectors(*pairs[2], [np.inf, 1.0]),
+        ),
+        *(
+            (
+                f"mean_rotation, {count}",
+                lambda M=M: eulerlib.mean_rotation(M),
+                lambda M=M: Rotation.from_matrix(M).mean().as_matrix(),
+            )
+            for count, M in sets.items()
+        ),
+        (
+            "multiply, 1 pair",
+            lambda: eulerlib.quaternion_multiply(one_q, other_q),
+            lambda: (Rotation.from_quat(one_q) * Rotation.from_quat(other_q)).as_quat(),
+        ),
+        (
+            "conjugate, 1",
+            lambda: eulerlib.quaternion_conjugate(one_q),
+            lambda: Rotation.from_quat(one_q).inv().as_quat(),
+        ),
+        (
+            "inverse, 1",
+            lambda: eulerlib.quaternion_inverse(one_q),
+            lambda: Rotation.from_quat(one_q).inv().as_quat(),
+        ),
+        (
+            "exp, 1",
+            lambda: eulerlib.quaternion_exp(one_v),
+            lambda: Rotation.from_rotvec(2 * one_v).as_quat(),
+        ),
+        (
+            "log, 1",
+            lambda: eulerlib.quaternion_log(one_q),
+            lambda: Rotation.from_quat(one_q).as_rotvec() / 2,
+        ),
+        (
+            "power, 1",
+            lambda: eulerlib.quaternion_power(one_q, 0.3),
+            lambda: (Rotation.from_quat(one_q) ** 0.3).as_quat(),
+        ),
+        (
+            "random rotations, 1",
+            lambda: eulerlib.random_rotations((), rng=rng),
+            lambda: Rotation.random(rng=rng).as_matrix(),
+        ),
     ]
     # no SciPy equivalent: eulerlib against the plain NumPy baseline of this script
     baseline_cases: list[tuple[str, Callable[[], object], Callable[[], object]]] = [
@@ -274,6 +412,21 @@ def main(argv: list[str] | None = None) -> None:
         print(
             f"{name:<32}{t_ours * 1e3:>9.1f} ms{t_theirs * 1e3:>9.1f} ms{t_theirs / t_ours:>15.2f}x"
         )
+    if any(args.only in name for name, _, _ in per_call):
+        print()
+        print("Per call, on typical sizes:")
+        header = f"{'operation':<32}{'eulerlib':>12}{'scipy':>12}{'scipy/eulerlib':>16}"
+        print(header)
+        print("-" * len(header))
+        for name, ours, theirs in per_call:
+            if args.only not in name:
+                continue
+            t_ours = per_call_time(ours, args.repeats)
+            t_theirs = per_call_time(theirs, args.repeats)
+            print(
+                f"{name:<32}{t_ours * 1e6:>9.1f} µs{t_theirs * 1e6:>9.1f} µs"
+                f"{t_theirs / t_ours:>15.2f}x"
+            )
     if not any(args.only in name for name, _, _ in baseline_cases):
         return
     print()
