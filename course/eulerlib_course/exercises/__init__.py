@@ -23,6 +23,8 @@ from .judges import (
     QuaternionJudge,
 )
 from .key import Example, Exercise, check, exercises, given
+from .predictions import predict
+from .seeds import student
 
 __all__ = [
     "AnglesJudge",
@@ -39,4 +41,6 @@ __all__ = [
     "check",
     "exercises",
     "given",
+    "predict",
+    "student",
 ]

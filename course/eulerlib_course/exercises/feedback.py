@@ -12,7 +12,7 @@ from typing import Literal
 
 Status = Literal["correct", "off", "not yet"]
 
-NOT_YET = "replace the ... with your answer and run the cell again"
+NOT_YET = "there is no answer yet; replace the ... with your answer and run the cell again"
 
 
 @dataclass(frozen=True)

@@ -9,7 +9,7 @@ from numpy.typing import NDArray
 
 from eulerlib import elementary_rotation, euler_to_matrix
 
-from .judges import ArrayJudge, Mistake
+from .judges import ArrayJudge, Mistake, rounded_to
 from .key import Example, Exercise
 
 # 01.1: a turn by -90° about x, typed in from where the basis vectors go (x stays, y → -z, z → y)
@@ -67,6 +67,7 @@ EXERCISES = [
         judge=ArrayJudge(
             _E_Z_TURNED,
             what="your image of e_z",
+            tol=rounded_to(3),
             mistakes=(
                 Mistake(
                     [-0.5, 0.0, _HALF_ROOT_3],
@@ -95,6 +96,7 @@ EXERCISES = [
                 "sine and cosine are swapped",
             ),
             Example("[0.5, 0.866]", "off", "shape (2,)"),
+            Example("[0.5, 0, 0.87]", "off", "close"),
         ),
         forbidden=("rot_y(30", "0.866", "0.5, 0"),
     ),
@@ -105,6 +107,7 @@ EXERCISES = [
             _THIRD_TURN_ABOUT_DIAGONAL,
             what="your matrix",
             rotation=True,
+            hint="its columns are the images of e_x, e_y and e_z: find where the turn takes each",
             mistakes=(
                 Mistake(
                     np.transpose(_THIRD_TURN_ABOUT_DIAGONAL),
@@ -119,7 +122,7 @@ EXERCISES = [
             Example("np.roll(np.eye(3), 1, axis=0)", "correct"),
             Example("np.array([[0, 1, 0], [0, 0, 1], [1, 0, 0]])", "off", "sends e_x to e_z"),
             Example("np.array([[0, 1, 0], [1, 0, 0], [0, 0, 1]])", "off", "reflection"),
-            Example("np.eye(3)", "off", "differ"),
+            Example("np.eye(3)", "off", "columns are the images"),
         ),
         forbidden=("[[0, 0, 1], [1, 0, 0], [0, 1, 0]]", "[e2, e3, e1]"),
     ),

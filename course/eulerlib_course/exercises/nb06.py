@@ -173,7 +173,7 @@ EXERCISES = [
                 "length 1",
             ),
             Example("[1, 0, 0]", "off", "only together"),
-            Example("[1, 1, -1]", "off", "entry (1,)"),
+            Example("[1, 1, -1]", "off", "are not it"),
         ),
         forbidden=("[1, 0, -1]", "1.0, 0.0, -1.0"),
     ),
