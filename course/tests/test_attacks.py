@@ -108,7 +108,9 @@ def attack(exercise_id: str) -> None:
 
 
 @pytest.mark.parametrize(("exercise_id", "student"), itertools.product(KEY, STUDENTS))
-def test_an_attack_that_reads_only_the_feedback_fails(exercise_id: str, student: str | None) -> None:
+def test_an_attack_that_reads_only_the_feedback_fails(
+    exercise_id: str, student: str | None
+) -> None:
     with as_student(student):
         try:
             attack(exercise_id)

@@ -260,15 +260,18 @@ def test_sympy_symbols_made_again_with_or_without_assumptions() -> None:
 
 
 @pytest.mark.parametrize(
-    "answer", [np.float32(0.5), np.float64(0.5), np.int64(2), [0.5], (0.5,), sp.Rational(1, 2)]
+    "answer", [np.float32(0.5), np.float64(0.5), np.array(0.5), 0.5, sp.Rational(1, 2)]
 )
 def test_numbers_in_any_reasonable_form_are_read(answer) -> None:
-    assert NumberJudge(float(np.ravel(np.asarray(answer, dtype=float))[0])).judge(
-        answer if not isinstance(answer, (list, tuple)) else answer[0]
-    ).status == "correct"
+    assert NumberJudge(0.5).judge(answer).status == "correct"
+    vector = ArrayJudge([0.5, 1.0])
+    for form in ([answer, 1], (answer, 1), np.array([answer, 1], dtype=object)):
+        assert vector.judge(form).status == "correct"
 
 
-@pytest.mark.parametrize(("answer", "words"), [("x", "is text"), (None, "is None"), (2j, "imaginary")])
+@pytest.mark.parametrize(
+    ("answer", "words"), [("x", "is text"), (None, "is None"), (2j, "imaginary")]
+)
 def test_text_none_and_complex_get_one_line(answer, words) -> None:
     feedback = check("09.1", answer)
     assert feedback.status == "off" and words in feedback.message and "\n" not in str(feedback)
