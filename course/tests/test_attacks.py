@@ -67,36 +67,60 @@ def score(message: str) -> float:
     return (0.0 if "close" in message else 1000.0) + sum(numbers)
 
 
-def walk(exercise: str, shape: tuple[int, ...], start: np.ndarray) -> None:
+def walk(exercise: str, shape: tuple[int, ...], start: np.ndarray, checks: int) -> None:
     result = minimize(
         lambda x: score(text(exercise, x.reshape(shape))),
         start.ravel(),
         method="Nelder-Mead",
-        options={"maxfev": MINIMIZER_CHECKS, "xatol": 1e-12, "fatol": 0.0},
+        options={"maxfev": checks, "xatol": 1e-12, "fatol": 0.0},
     )
     text(exercise, result.x.reshape(shape))
 
 
+def search(exercise_id: str, judge: object, checks: int, option: str | None = None) -> None:
+    """Bisection on a number, the minimizer on anything else, with ``checks`` checks."""
+    rng = np.random.default_rng(17)
+    ask = exercise_id
+    if option is not None:
+        global text
+        plain = text
+
+        def paired(_: str, answer: object) -> str:
+            return plain(exercise_id, (option, answer))
+
+        text = paired  # type: ignore[assignment]
+    try:
+        if isinstance(judge, NumberJudge):
+            spans = {"deg": 360.0, "rad": 2 * np.pi}
+            span = spans.get(judge.unit or "", 1000.0)
+            bisect(ask, -span, span)
+            bisect(ask, 0.0, span)
+        elif isinstance(judge, (ArrayJudge, AnglesJudge, QuaternionJudge)):
+            shape = {AnglesJudge: (3,), QuaternionJudge: (4,)}.get(
+                type(judge), np.shape(judge.reference)
+            )
+            scale = 90.0 if isinstance(judge, AnglesJudge) and judge.degrees else 1.0
+            walk(ask, shape, scale * rng.uniform(-1, 1, shape), checks)
+            if len(shape) == 2 and shape[0] == shape[1]:
+                walk(ask, shape, np.eye(shape[0]), checks)
+        else:  # pragma: no cover - a new kind of judge needs its attack here
+            raise AssertionError(f"{exercise_id}: no attack for {type(judge).__name__}")
+    finally:
+        if option is not None:
+            text = plain
+
+
 def attack(exercise_id: str) -> None:
     judge = KEY[exercise_id].judge_for()
-    rng = np.random.default_rng(17)
     if isinstance(judge, ChoiceJudge):
-        for option in judge.options:
+        for option in judge.options:  # every option, alone and with a computed part
             text(exercise_id, option)
             text(exercise_id, option.upper())
-    elif isinstance(judge, NumberJudge):
-        spans = {"deg": 360.0, "rad": 2 * np.pi}
-        span = spans.get(judge.unit or "", 1000.0)
-        bisect(exercise_id, -span, span)
-        bisect(exercise_id, 0.0, span)
-    elif isinstance(judge, (ArrayJudge, AnglesJudge, QuaternionJudge)):
-        shape = {AnglesJudge: (3,), QuaternionJudge: (4,)}.get(
-            type(judge), np.shape(judge.reference)
-        )
-        scale = 90.0 if isinstance(judge, AnglesJudge) and judge.degrees else 1.0
-        walk(exercise_id, shape, scale * rng.uniform(-1, 1, shape))
-        if len(shape) == 2 and shape[0] == shape[1]:
-            walk(exercise_id, shape, np.eye(shape[0]))
+            text(exercise_id, (option, 0.0))
+            if judge.computed is not None:
+                search(exercise_id, judge.computed, MINIMIZER_CHECKS // len(judge.options), option)
+    elif isinstance(judge, (NumberJudge, ArrayJudge, AnglesJudge, QuaternionJudge)):
+        search(exercise_id, judge, MINIMIZER_CHECKS)
     elif isinstance(judge, ExpressionJudge):
         # a symbolic answer has no numbers to search; the attack tries the forms a guesser would
         import sympy as sp

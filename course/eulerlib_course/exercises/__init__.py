@@ -23,7 +23,7 @@ from .judges import (
     QuaternionJudge,
 )
 from .key import Example, Exercise, check, exercises, given
-from .predictions import predict
+from .predictions import predict, settle
 from .seeds import student
 
 __all__ = [
@@ -42,5 +42,6 @@ __all__ = [
     "exercises",
     "given",
     "predict",
+    "settle",
     "student",
 ]

@@ -544,11 +544,20 @@ class ExpressionJudge(Judge):
 
 @dataclass(frozen=True)
 class ChoiceJudge(Judge):
-    """One option among several (at least three), each wrong option with its own explanation."""
+    """One option among several (at least three), and the computation that settles it.
+
+    Each wrong option has its own explanation, which says why that option fails and never names
+    the right one. With ``computed`` (a judge of a number, a vector, a matrix) the answer is a
+    pair, ``(option, value)``: the option the learner predicts and the value they computed to
+    settle it; both must be right, so trying the options one by one passes nothing.
+    ``computed_what`` names the value in the feedback ("the yaw you computed").
+    """
 
     options: Mapping[str, str]
     answer: str
     explanations: Mapping[str, str] = field(default_factory=dict)
+    computed: Judge | None = None
+    computed_what: str = "the value you computed"
     kind = "choice"
 
     def __post_init__(self) -> None:
@@ -560,11 +569,38 @@ class ChoiceJudge(Judge):
         if missing:
             raise ValueError(f"every wrong option needs an explanation; missing {sorted(missing)}")
 
+    def _option(self, answer: object) -> str | None:
+        if isinstance(answer, str) and answer.strip().lower() in self.options:
+            return answer.strip().lower()
+        return None
+
     def judge(self, answer: object) -> Verdict:
         labels = ", ".join(repr(label) for label in self.options)
-        if not isinstance(answer, str) or answer.strip().lower() not in self.options:
-            return off(f"give one of the options {labels} (as text, in quotes)")
-        label = answer.strip().lower()
-        if label == self.answer:
-            return correct(self.explanations.get(label, "that is the one"))
-        return off(self.explanations[label])
+        if self.computed is None:
+            label = self._option(answer)
+            if label is None:
+                return off(f"give one of the options {labels} (as text, in quotes)")
+            if label == self.answer:
+                return correct(self.explanations.get(label, "that is the one"))
+            return off(self.explanations[label])
+        pair = isinstance(answer, (tuple, list)) and len(answer) == 2 and self._option(answer[0])
+        if not pair:
+            return off(
+                f"give a pair: one of the options {labels} (as text, in quotes), then "
+                f"{self.computed_what}, for example ('a', value)"
+            )
+        assert isinstance(answer, (tuple, list))
+        label = self._option(answer[0])
+        if answer[1] is Ellipsis:
+            return Verdict(
+                "not yet",
+                f"your prediction {label!r} is recorded; now compute {self.computed_what} and "
+                "put it in place of the ...",
+            )
+        if label != self.answer:
+            assert label is not None
+            return off(self.explanations[label])
+        settled = self.computed.judge(answer[1])
+        if settled.status != "correct":
+            return off(settled.message)
+        return correct(self.explanations.get(label, "that is the one"))

@@ -4,11 +4,16 @@ from __future__ import annotations
 
 import numpy as np
 
-from .judges import AnglesJudge, ChoiceJudge, Constraint, Mistake
+from eulerlib import euler_to_matrix, matrix_to_euler, rot_y
+
+from .judges import AnglesJudge, ChoiceJudge, Constraint, Mistake, NumberJudge, rounded_to
 from .key import Example, Exercise
 
 _LOCKED = (25.0, 90.0, 70.0)  # yaw, pitch, roll of the aircraft of 07.1, degrees
 _ZXZ = (30.0, 180.0, 10.0)  # z, x', z'' of the matrix of 07.3, degrees
+# 07.2: the locked attitude of section 4 nudged by 1e-9 rad about the world +y axis
+_NUDGED = rot_y(1e-9) @ euler_to_matrix([0.0, 90.0, -20.0], "ZYX", degrees=True)
+_NUDGED_ROLL = float(matrix_to_euler(_NUDGED, "ZYX", degrees=True)[2])
 
 
 def _is_zero_degrees(angle: float) -> bool:
@@ -68,11 +73,22 @@ EXERCISES = [
                 "d": "the yaw comes out as NaN",
             },
             answer="c",
+            computed=NumberJudge(
+                _NUDGED_ROLL,
+                what="your roll",
+                tol=rounded_to(2),
+                unit="deg",
+                modulo=360.0,
+                hint="read it from matrix_to_euler of the nudged matrix, in degrees; at the "
+                "lock only roll − yaw is pinned down",
+            ),
+            computed_what="the roll that comes with that yaw",
             explanations={
-                "a": "a nudge about −y would leave the yaw near 0°; about +y the nose tips toward "
-                "−x, and the yaw follows the nose's shadow there",
-                "b": "±90° is what the nudges about ±x give, which tip the nose toward ±y; a "
-                "nudge about +y tips it toward −x",
+                "a": "the yaw is the direction of the nose's shadow on the horizontal plane, "
+                "atan2(r21, r11); it stays near 0° only if the nudge tips the nose toward +x: "
+                "work out from column 1 of rot_y(ε) R_lock which way it tips",
+                "b": "±90° would mean the nose tips toward ±y; a turn about the y axis moves the "
+                "nose within the x–z plane and leaves its y component alone",
                 "c": "about +y the nose tips toward −x, and the yaw is the direction of "
                 "the nose's shadow, atan2(r21, r11): 180°",
                 "d": "atan2 of two tiny numbers is a perfectly good angle: the direction in which "
@@ -80,12 +96,15 @@ EXERCISES = [
             },
         ),
         examples=(
-            Example("'c'", "correct", "shadow"),
-            Example("' C '", "correct", "180°"),
-            Example("'a'", "off", "−x"),
-            Example("'b'", "off", "±y"),
-            Example("'d'", "off", "atan2"),
-            Example("180", "off", "as text"),
+            Example("('c', 160.0)", "correct", "shadow"),
+            Example("('c', ...)", "not yet", "recorded"),
+            Example("(' C ', -200.0)", "correct", "180°"),
+            Example("('c', -20.0)", "off", "your roll is not it"),
+            Example("('a', -20.0)", "off", "which way it tips"),
+            Example("('b', 70.0)", "off", "x–z plane"),
+            Example("('d', float('nan'))", "off", "atan2"),
+            Example("'c'", "off", "give a pair"),
+            Example("180", "off", "give a pair"),
         ),
     ),
     Exercise(

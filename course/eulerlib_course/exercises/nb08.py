@@ -6,7 +6,7 @@ import numpy as np
 
 from eulerlib import convert_angles, euler_to_matrix, matrix_to_euler, rot_x, rot_y, rot_z
 
-from .judges import AnglesJudge, ChoiceJudge, Mistake
+from .judges import AnglesJudge, ArrayJudge, ChoiceJudge, Mistake, rounded_to
 from .key import Example, Exercise
 
 _HAB = (120.0, -30.0, 45.0)  # Baker's heading, attitude, bank of 08.1, degrees
@@ -98,22 +98,31 @@ EXERCISES = [
                 "d": "lower",
             },
             answer="a",
+            computed=ArrayJudge(
+                rot_y(10.0, degrees=True) @ np.array([0.0, 0.0, 1.0]),
+                what="your line of sight",
+                tol=rounded_to(3),
+                rotation=True,
+                hint="turn the line of sight (0, 0, 1) of the camera's own axes by its turn",
+            ),
+            computed_what="the line of sight you computed",
             explanations={
                 "a": "the camera's y points down, and a right-handed turn about an axis pointing "
                 "down swings the line of sight (z) toward x, the right of the image",
-                "b": "a positive turn about an axis pointing up turns to the left (a yaw with z "
-                "up); the camera's y points down, so the turn goes the other way",
+                "b": "a turn to the left is what +10° about an axis pointing up gives (a yaw "
+                "with z up); check which way the camera's own y points before you carry it over",
                 "c": _SIDEWAYS,
                 "d": _SIDEWAYS,
             },
         ),
         examples=(
-            Example("'a'", "correct", "points"),
-            Example("'A'", "correct", "right of the image"),
-            Example("'b'", "off", "points down"),
-            Example("'c'", "off", "sideways"),
-            Example("'d'", "off", "sideways"),
-            Example("1", "off", "as text"),
+            Example("('a', rot_y(10, degrees=True) @ [0, 0, 1])", "correct", "points"),
+            Example("('A', [0.174, 0, 0.985])", "correct", "right of the image"),
+            Example("('a', rot_y(-10, degrees=True) @ [0, 0, 1])", "off", "line of sight"),
+            Example("('b', rot_y(10, degrees=True) @ [0, 0, 1])", "off", "camera's own y"),
+            Example("('c', [0, 0, 1])", "off", "sideways"),
+            Example("('d', [0, 0, 1])", "off", "sideways"),
+            Example("'a'", "off", "give a pair"),
         ),
     ),
     Exercise(

@@ -22,12 +22,28 @@ _PREDICTIONS: dict[str, Any] = {}
 _SETTLED: set[str] = set()
 
 
+def _option_and_value(answer: object) -> tuple[object, object] | None:
+    if isinstance(answer, (tuple, list)) and len(answer) == 2:
+        return answer[0], answer[1]
+    return None
+
+
 def record(exercise: str, answer: object) -> object:
     """Record ``answer`` as the prediction of ``exercise`` unless the question is settled;
-    return the prediction that counts."""
+    return the answer that counts.
+
+    For a choice with a computed part, ``(option, value)``, only the option is the prediction:
+    after the settling computation the option stays the one recorded, and the computed value
+    may still be corrected.
+    """
+    pair = _option_and_value(answer)
     if not _blank(answer) and exercise not in _SETTLED:
         _PREDICTIONS[exercise] = answer
-    return _PREDICTIONS.get(exercise, answer)
+    recorded = _PREDICTIONS.get(exercise, answer)
+    if exercise in _SETTLED and pair is not None:
+        before = _option_and_value(recorded)
+        return (before[0] if before is not None else recorded, pair[1])
+    return recorded
 
 
 def predict(exercise: str, answer: object) -> Feedback:
