@@ -71,6 +71,11 @@ def configure_notebooks(parser: argparse.ArgumentParser) -> None:
         "--src", type=Path, help="folder of the course notebooks (default: notebooks/)"
     )
     student.add_argument(
+        "--student",
+        metavar="NAME",
+        help="make the copies for this student: their own data in every exercise that has some",
+    )
+    student.add_argument(
         "--force", action="store_true", help="overwrite student copies already in --out"
     )
     grading = actions.add_parser(
@@ -125,15 +130,15 @@ def run_notebooks(args: argparse.Namespace) -> int:
     require(NOTEBOOK_TOOLS, extra=None, needed_by=f"eulerlib-course notebooks {args.action}")
     if args.action == "refresh":
         return _refresh(args.notebooks)
-    return _student(args.src, args.out, force=args.force)
+    return _student(args.src, args.out, force=args.force, student=args.student)
 
 
-def _student(src: Path | None, out: Path, *, force: bool) -> int:
+def _student(src: Path | None, out: Path, *, force: bool, student: str | None = None) -> int:
     from eulerlib_course.student import write_student_copies
 
     source = src if src is not None else _course_folder(NOTEBOOK_FOLDER, "pass --src DIR")
     try:
-        written = write_student_copies(source, out, force=force)
+        written = write_student_copies(source, out, force=force, student=student)
     except FileExistsError as error:
         raise ValueError(f"{error}; pass --force to overwrite them") from None
     print(f"wrote {len(written)} student copies to {out}")
