@@ -9,8 +9,8 @@ the ``...`` and says "not yet" until the learner fills in an answer.
 
 Each copy of a notebook that uses the exercises gets, after its first cell that imports from
 ``eulerlib_course``, a cell that says whose data the exercises give (:mod:`.exercises.seeds`):
-``student("NAME")`` in a copy made for a named student, ``student(...)`` otherwise, for the
-student to type their name in. Exercises that make data per student then give that student
+``student_name("NAME")`` in a copy made for a named student, ``student_name(...)`` otherwise,
+for the student to type their name in. Exercises that make data per student then give that student
 data of their own, and check answers against the reference of those data.
 
 The copy is made by nbconvert's ``TagRemovePreprocessor`` (removing the cells tagged
@@ -53,20 +53,20 @@ def name_cell_source(student: str | None) -> str:
     --------
     >>> print(name_cell_source("ada"))
     # whose data the exercises give: this copy is ada's
-    from eulerlib_course import student
+    from eulerlib_course import student_name
     <BLANKLINE>
-    student('ada')
+    student_name('ada')
     """
     if student is None:
         head = (
             "# whose data the exercises give: type your name in place of the ..., then run the\n"
             "# notebook from the top (leave the ... for the data of the teacher's edition)"
         )
-        call = "student(...)"
+        call = "student_name(...)"
     else:
         head = f"# whose data the exercises give: this copy is {student}'s"
-        call = f"student({student!r})"
-    return f"{head}\nfrom eulerlib_course import student\n\n{call}"
+        call = f"student_name({student!r})"
+    return f"{head}\nfrom eulerlib_course import student_name\n\n{call}"
 
 
 def _check_student(student: object) -> str | None:
@@ -90,7 +90,7 @@ def student_copy(notebook: Any, student: str | None = None) -> Any:
         A course notebook; it is left unchanged.
     student : str, optional
         The student the copy is for; their name goes in the copy's name cell (see the module
-        docstring). Without it the name cell holds ``student(...)``.
+        docstring). Without it the name cell holds ``student_name(...)``.
 
     Returns
     -------

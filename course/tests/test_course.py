@@ -181,7 +181,9 @@ def test_student_copy_has_no_solutions_and_no_outputs(path: Path) -> None:
     kept.insert(first + 1, name_cell_source(None))  # whose data: the student types a name
     assert [c.source for c in student.cells] == kept
     named = student_copy(original, "ada")
-    assert [c.source for c in named.cells if "student(" in c.source] == [name_cell_source("ada")]
+    assert [c.source for c in named.cells if "student_name(" in c.source] == [
+        name_cell_source("ada")
+    ]
     for tag in ("exercise", "check"):
         count = sum(tag in tags_of(cell) for cell in original.cells)
         assert sum(tag in tags_of(cell) for cell in student.cells) == count

@@ -24,7 +24,7 @@ from .judges import (
 )
 from .key import Example, Exercise, check, exercises, given
 from .predictions import predict, settle
-from .seeds import student
+from .seeds import student_name
 
 __all__ = [
     "AnglesJudge",
@@ -43,5 +43,5 @@ __all__ = [
     "given",
     "predict",
     "settle",
-    "student",
+    "student_name",
 ]

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from eulerlib import euler_to_matrix, matrix_to_euler, rot_y
@@ -16,39 +18,87 @@ _NUDGED = rot_y(1e-9) @ euler_to_matrix([0.0, 90.0, -20.0], "ZYX", degrees=True)
 _NUDGED_ROLL = float(matrix_to_euler(_NUDGED, "ZYX", degrees=True)[2])
 
 
+def _some_locked(rng: np.random.Generator) -> Any:
+    """A student's yaw, pitch, roll at pitch +90°: yaw and roll whole degrees, their sum and
+    difference at least 10° from 0° (so that the two mistakes differ from the answer)."""
+    while True:
+        yaw, roll = (float(a) for a in rng.integers(-80, 81, 2))
+        if min(abs(roll - yaw), abs(roll + yaw), abs(yaw), abs(2 * yaw)) >= 10:
+            return np.array([yaw, 90.0, roll])
+
+
+def _some_zxz(rng: np.random.Generator) -> Any:
+    """A student's z, x', z'' at x' = 180°, picked like :func:`_some_locked`'s yaw and roll."""
+    z, _, z2 = _some_locked(rng)
+    return np.array([z, 180.0, z2])
+
+
 def _is_zero_degrees(angle: float) -> bool:
     """Whether an angle in degrees is 0 up to whole turns."""
     return abs((angle + 180.0) % 360.0 - 180.0) <= 1e-9
+
+
+def _judge_locked(ypr: Any) -> AnglesJudge:
+    return AnglesJudge(
+        ypr,
+        "rose",
+        degrees=True,
+        what="your yaw, pitch, roll",
+        constraints=(
+            Constraint(
+                lambda a: _is_zero_degrees(float(a[0])),
+                "the question asks for the triple with yaw = 0°",
+            ),
+        ),
+        mistakes=(
+            Mistake(
+                [0.0, 90.0, ypr[2] + ypr[0]],
+                "you added yaw and roll: the sum roll + yaw is what survives at pitch −90°; "
+                "at pitch +90° the matrix keeps roll − yaw",
+            ),
+            Mistake(
+                [0.0, 90.0, ypr[0] - ypr[2]],
+                "you took yaw − roll: at pitch +90° the matrix keeps roll − yaw, the other "
+                "way round",
+            ),
+        ),
+    )
+
+
+def _judge_zxz(zxz: Any) -> AnglesJudge:
+    return AnglesJudge(
+        zxz,
+        "ZXZ",
+        degrees=True,
+        what="your z, x', z''",
+        constraints=(
+            Constraint(
+                lambda a: _is_zero_degrees(float(a[0])),
+                "the question asks for the triple with the first angle z = 0°",
+            ),
+        ),
+        mistakes=(
+            Mistake(
+                [0.0, 180.0, zxz[2] + zxz[0]],
+                "you added z and z'': that is what survives at x' = 0°; at x' = 180° the "
+                "middle turn points the z axis the other way, so the two outer turns oppose "
+                "each other and the matrix keeps z'' − z",
+            ),
+            Mistake(
+                [0.0, 180.0, zxz[0] - zxz[2]],
+                "you took z − z'': at x' = 180° the matrix keeps z'' − z, the other way round",
+            ),
+        ),
+    )
 
 
 EXERCISES = [
     Exercise(
         id="07.1",
         level="apply",
-        judge=AnglesJudge(
-            _LOCKED,
-            "rose",
-            degrees=True,
-            what="your yaw, pitch, roll",
-            constraints=(
-                Constraint(
-                    lambda a: _is_zero_degrees(float(a[0])),
-                    "the question asks for the triple with yaw = 0°",
-                ),
-            ),
-            mistakes=(
-                Mistake(
-                    [0.0, 90.0, _LOCKED[2] + _LOCKED[0]],
-                    "you added yaw and roll: the sum roll + yaw is what survives at pitch −90°; "
-                    "at pitch +90° the matrix keeps roll − yaw",
-                ),
-                Mistake(
-                    [0.0, 90.0, _LOCKED[0] - _LOCKED[2]],
-                    "you took yaw − roll: at pitch +90° the matrix keeps roll − yaw, the other "
-                    "way round",
-                ),
-            ),
-        ),
+        judge=_judge_locked(_LOCKED),
+        per_student=_some_locked,
+        judged=_judge_locked,
         given=lambda: np.array(_LOCKED),
         examples=(
             Example("[0.0, ypr_ex[1], ypr_ex[2] - ypr_ex[0]]", "correct"),
@@ -110,30 +160,9 @@ EXERCISES = [
     Exercise(
         id="07.3",
         level="extend",
-        judge=AnglesJudge(
-            _ZXZ,
-            "ZXZ",
-            degrees=True,
-            what="your z, x', z''",
-            constraints=(
-                Constraint(
-                    lambda a: _is_zero_degrees(float(a[0])),
-                    "the question asks for the triple with the first angle z = 0°",
-                ),
-            ),
-            mistakes=(
-                Mistake(
-                    [0.0, 180.0, _ZXZ[2] + _ZXZ[0]],
-                    "you added z and z'': that is what survives at x' = 0°; at x' = 180° the "
-                    "middle turn points the z axis the other way, so the two outer turns oppose "
-                    "each other and the matrix keeps z'' − z",
-                ),
-                Mistake(
-                    [0.0, 180.0, _ZXZ[0] - _ZXZ[2]],
-                    "you took z − z'': at x' = 180° the matrix keeps z'' − z, the other way round",
-                ),
-            ),
-        ),
+        judge=_judge_zxz(_ZXZ),
+        per_student=_some_zxz,
+        judged=_judge_zxz,
         given=lambda: np.array(_ZXZ),
         examples=(
             Example("[0.0, zxz_ex[1], zxz_ex[2] - zxz_ex[0]]", "correct"),

@@ -11,7 +11,7 @@ Who the student is, in this order:
 1. when nbgrader grades a submission, the student id in the folder it runs in
    (``autograded/STUDENT/ASSIGNMENT/`` or ``submitted/STUDENT/ASSIGNMENT/``: nbgrader's
    ``autograde`` executes each notebook in its autograded copy of the submission folder);
-2. the name given to :func:`student` in the notebook (a student copy made with
+2. the name given to :func:`student_name` in the notebook (a student copy made with
    ``--student NAME`` has that cell; a student may type their name in it);
 3. the environment variable ``EULERLIB_STUDENT``;
 4. nobody: the teacher's edition, with the data its worked solutions and stored outputs use.
@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["as_student", "current_student", "rng_for", "student"]
+__all__ = ["as_student", "current_student", "rng_for", "student_name"]
 
 #: The environment variable that names the student when no notebook cell does.
 ENVIRONMENT = "EULERLIB_STUDENT"
@@ -48,8 +48,8 @@ def _check_name(name: object) -> str | None:
     return name
 
 
-def student(name: str | None) -> None:
-    """Say whose data the exercises of this notebook give: ``student("ada")``.
+def student_name(name: str | None) -> None:
+    """Say whose data the exercises of this notebook give: ``student_name("ada")``.
 
     ``...``, ``None`` or empty text means nobody: the teacher's data. While nbgrader grades a
     submission, the student id of the submission folder wins over the name given here.
@@ -61,9 +61,9 @@ def student(name: str | None) -> None:
 
     Examples
     --------
-    >>> student("ada"); current_student()
+    >>> student_name("ada"); current_student()
     'ada'
-    >>> student(None); current_student() is None
+    >>> student_name(None); current_student() is None
     True
     """
     global _named
