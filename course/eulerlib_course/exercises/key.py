@@ -124,6 +124,11 @@ def exercises() -> dict[str, Exercise]:
 def _lookup(exercise: object) -> Exercise:
     if not isinstance(exercise, str):
         raise TypeError(f"exercise must be an id such as '05.2', got {type(exercise).__name__}")
+    if not exercises():
+        raise ValueError(
+            "the answer key is not installed here (graded mode): your answers are checked for "
+            "their form, and graded when you hand them in"
+        )
     key = exercises().get(exercise.strip())
     if key is None:
         raise ValueError(f"there is no exercise {exercise!r} in the course")

@@ -13,7 +13,8 @@ Who the student is, in this order:
    ``autograde`` executes each notebook in its autograded copy of the submission folder);
 2. the name given to :func:`student_name` in the notebook (a student copy made with
    ``--student NAME`` has that cell; a student may type their name in it);
-3. the environment variable ``EULERLIB_STUDENT``;
+3. the environment variable ``EULERLIB_STUDENT``, then JupyterHub's ``JUPYTERHUB_USER`` (the
+   login, which is nbgrader's student id on a JupyterHub);
 4. nobody: the teacher's edition, with the data its worked solutions and stored outputs use.
 """
 
@@ -32,6 +33,8 @@ __all__ = ["as_student", "current_student", "rng_for", "student_name"]
 
 #: The environment variable that names the student when no notebook cell does.
 ENVIRONMENT = "EULERLIB_STUDENT"
+#: JupyterHub's name of the logged-in user, who is the student on a hub.
+HUB_USER = "JUPYTERHUB_USER"
 _GRADED_FOLDER = re.compile(r"(?:autograded|submitted)$")
 
 _named: str | None = None
@@ -85,7 +88,7 @@ def current_student() -> str | None:
         return graded
     if _named is not None:
         return _named
-    return _check_name(os.environ.get(ENVIRONMENT))
+    return _check_name(os.environ.get(ENVIRONMENT)) or _check_name(os.environ.get(HUB_USER))
 
 
 def rng_for(exercise: str, name: str) -> np.random.Generator:
@@ -93,7 +96,7 @@ def rng_for(exercise: str, name: str) -> np.random.Generator:
 
     Examples
     --------
-    >>> rng_for("05.1", "ada").integers(1000) == rng_for("05.1", "ada").integers(1000)
+    >>> bool(rng_for("05.1", "ada").integers(1000) == rng_for("05.1", "ada").integers(1000))
     True
     """
     digest = hashlib.sha256(f"eulerlib course · {exercise} · {name}".encode()).digest()
@@ -104,11 +107,13 @@ def rng_for(exercise: str, name: str) -> np.random.Generator:
 def as_student(name: str | None) -> Iterator[None]:
     """Within the block, the exercises give ``name``'s data (None: the teacher's); for tests."""
     global _named
-    saved, saved_env = _named, os.environ.pop(ENVIRONMENT, None)
+    saved = _named
+    saved_env = {key: os.environ.pop(key, None) for key in (ENVIRONMENT, HUB_USER)}
     _named = _check_name(name)
     try:
         yield
     finally:
         _named = saved
-        if saved_env is not None:
-            os.environ[ENVIRONMENT] = saved_env
+        for key, value in saved_env.items():
+            if value is not None:
+                os.environ[key] = value
