@@ -42,7 +42,7 @@ from eulerlib_course.nbgrader_edition import (
     nbgrader_edition,
     write_nbgrader_edition,
 )
-from eulerlib_course.student import student_copy
+from eulerlib_course.student import name_cell_source, student_copy
 
 REPO = Path(__file__).resolve().parents[2]
 COURSE = REPO / "notebooks"
@@ -242,9 +242,15 @@ def test_each_exercise_becomes_an_answer_cell_and_a_hidden_test(small_course: Pa
     locked = [c for c in notebook.cells if grading(c)["locked"] and not grading(c)["grade"]]
     assert [c.source for c in locked] == [c.source for c in kept]
     assert all(grading(c)["solution"] is False for c in locked)
-    answers = [c for c in notebook.cells if grading(c)["solution"]]
+    answers = [c for c in notebook.cells if grading(c)["grade_id"].startswith("answer-")]
     tests = [c for c in notebook.cells if grading(c)["grade"]]
-    assert len(notebook.cells) == len(kept) + len(answers) + len(tests)
+    # the name cell follows the cell that imports from eulerlib_course, as in a student copy
+    (name,) = [c for c in notebook.cells if grading(c)["grade_id"] == "student-name"]
+    assert grading(name)["solution"] and not grading(name)["locked"]
+    assert name.source == f"{name_cell_source(None)}\n### BEGIN SOLUTION\n### END SOLUTION"
+    before = notebook.cells[notebook.cells.index(name) - 1]
+    assert "from eulerlib_course import" in before.source
+    assert len(notebook.cells) == len(kept) + len(answers) + len(tests) + 1
     assert [grading(c)["grade_id"] for c in answers] == [
         "answer-05-1",
         "answer-05-2",
@@ -479,9 +485,18 @@ def row(exercise: Exercise, status: str, index: int) -> tuple[str, str, str]:
 
 
 def answer(exercise: Exercise, verdict: str, index: int) -> tuple[str | None, str, str]:
-    """An answer with that verdict: a row of the test table, or None (the untouched ``...``)."""
+    """An answer with that verdict: a row of the test table, or None (the untouched ``...``).
+
+    An exercise with data of each student's own is graded on the submitting student's data,
+    where the rows of the test table (written for the teacher's data) need not hold; it gets
+    an answer in the wrong form as its mistake, and its worked solution as its right answer
+    (see :func:`grade_course`)."""
     if verdict == "not yet":
         return None, "not yet", NOT_YET
+    if exercise.per_student is not None and verdict == "off":
+        return f"answer_{exercise.id[-1]} = 'three numbers'", "off", "is text"
+    if exercise.per_student is not None:
+        return "", "correct", ""  # filled in with the worked solution
     return row(exercise, verdict, index)
 
 
@@ -542,6 +557,10 @@ def grade_course(source: Path, course: Path, capsys: pytest.CaptureFixture[str])
             },
             "typical": {k.id: answer(k, typical[(n + number) % 4], n) for n, k in enumerate(keys)},
         }
+        for k, (_, solution) in zip(keys, solved, strict=True):
+            code, verdict, says = plans["typical"][k.id]
+            if code == "":
+                plans["typical"][k.id] = (solution.strip(), verdict, says)
         for student, plan in plans.items():
             folder = course / "submitted" / student / assignment
             shutil.copytree(course / "release" / assignment, folder)
