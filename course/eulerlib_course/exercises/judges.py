@@ -347,7 +347,7 @@ class AnglesJudge(Judge):
                     seq,
                     self.degrees,
                     f"{name} is off by {'180°' if self.degrees else 'π'}, half a turn: check the "
-                    "quadrant of that angle (atan2(y, x) keeps it, atan(y/x) does not)",
+                    "quadrant of that angle",
                 )
             )
         for angles, candidate_seq, degrees, message in candidates:

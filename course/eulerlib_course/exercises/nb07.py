@@ -53,13 +53,14 @@ def _judge_locked(ypr: Any) -> AnglesJudge:
         mistakes=(
             Mistake(
                 [0.0, 90.0, ypr[2] + ypr[0]],
-                "you added yaw and roll: the sum roll + yaw is what survives at pitch −90°; "
-                "at pitch +90° the matrix keeps roll − yaw",
+                "you added yaw and roll: the sum is what survives at pitch −90°; at pitch +90° "
+                "write out where R_y(90°) lays the roll axis, and which way the two outer turns "
+                "then go about it",
             ),
             Mistake(
                 [0.0, 90.0, ypr[0] - ypr[2]],
-                "you took yaw − roll: at pitch +90° the matrix keeps roll − yaw, the other "
-                "way round",
+                "you took yaw − roll: the combination is right up to its sign; check the sign "
+                "each outer angle carries in the locked matrix",
             ),
         ),
     )
@@ -81,12 +82,13 @@ def _judge_zxz(zxz: Any) -> AnglesJudge:
             Mistake(
                 [0.0, 180.0, zxz[2] + zxz[0]],
                 "you added z and z'': that is what survives at x' = 0°; at x' = 180° the "
-                "middle turn points the z axis the other way, so the two outer turns oppose "
-                "each other and the matrix keeps z'' − z",
+                "middle turn points the z axis the other way: work out how the two outer turns "
+                "about z combine then",
             ),
             Mistake(
                 [0.0, 180.0, zxz[0] - zxz[2]],
-                "you took z − z'': at x' = 180° the matrix keeps z'' − z, the other way round",
+                "you took z − z'': the combination is right up to its sign; check the sign "
+                "each outer angle carries in the locked matrix",
             ),
         ),
     )
@@ -106,7 +108,7 @@ EXERCISES = [
             Example("[360, 90, 45]", "correct", "rotation asked for"),
             Example("[25, 90, 70]", "off", "yaw = 0°"),
             Example("[-45, 90, 0]", "off", "yaw = 0°"),
-            Example("[0, 90, 95]", "off", "roll + yaw"),
+            Example("[0, 90, 95]", "off", "you added yaw and roll"),
             Example("[0, 90, -45]", "off", "yaw − roll"),
             Example("np.radians([0, 90, 45])", "off", "radians"),
         ),
@@ -168,8 +170,8 @@ EXERCISES = [
             Example("[0.0, zxz_ex[1], zxz_ex[2] - zxz_ex[0]]", "correct"),
             Example("[0, -180, 340]", "correct", "rotation asked for"),
             Example("[30, 180, 10]", "off", "z = 0°"),
-            Example("[0, 180, 40]", "off", "z'' − z"),
-            Example("[0, 180, 20]", "off", "the other way round"),
+            Example("[0, 180, 40]", "off", "you added z and z''"),
+            Example("[0, 180, 20]", "off", "right up to its sign"),
             Example("np.radians([0, 180, -20])", "off", "radians"),
         ),
         forbidden=("180, -20", "180.0, -20.0"),

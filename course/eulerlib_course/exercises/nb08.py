@@ -149,6 +149,15 @@ EXERCISES = [
                 " degrees=True)",
                 "correct",
             ),
+            Example(  # worked by hand and written to 6 decimals
+                "np.round(convert_angles(hab_ex, 'baker', 'rose', degrees=True), 6)",
+                "correct",
+            ),
+            Example(  # to 1 decimal: close, not yet within the tolerance
+                "np.round(convert_angles(hab_ex, 'baker', 'rose', degrees=True), 1)",
+                "off",
+                "close",
+            ),
             Example(
                 "convert_angles(hab_ex, 'baker', 'rose', degrees=True) + [360, 0, -360]",
                 "correct",

@@ -57,9 +57,11 @@ _FLAT_SINE = (
     "exactly π/2; take the pitch from atan2 of its sine and its cosine instead"
 )
 _NOISE = (
-    "you used the general formulas: at the pole m20, m00, m12 and m11 are rounding noise (here "
-    "zeros), and atan2 of noise is no angle at all; at the north pole use heading = "
-    "atan2(m02, m22)"
+    "heading 0° and bank 0° do not give this matrix: at the north pole it fixes only heading + "
+    "bank, which is not 0° here. The general formulas give these zeros (at the pole m20, m00, "
+    "m12 and m11 are rounding noise, and atan2 of noise is no angle at all), and so does "
+    "setting the heading to 0°, which is Rose's choice, not Baker's; Baker's choice is bank = "
+    "0°, and the heading then carries the whole sum: heading = atan2(m02, m22)"
 )
 
 EXERCISES = [

@@ -125,6 +125,8 @@ EXERCISES = [
             _OMEGA,
             what="your angular velocity",
             tol=1e-6,
+            hint="the turn between the two samples is M₀ᵀ M₁; its rotation vector, divided by "
+            "the time between the samples, is the rate",
             mistakes=(
                 Mistake(
                     _SPACE_OMEGA,
