@@ -516,11 +516,15 @@ def nbgrader(course: Path, *args: str) -> None:
     assert result.returncode == 0, f"nbgrader {' '.join(args)} failed:\n{result.stderr[-4000:]}"
 
 
-def grade_course(source: Path, course: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def grade_course(
+    source: Path, course: Path, capsys: pytest.CaptureFixture[str], *, graded: bool = False
+) -> None:
     """Write the edition of ``source``, let nbgrader generate, autograde and export it, and check
-    the exported grades and the diagnoses in the graded notebooks."""
+    the exported grades and the diagnoses in the graded notebooks. Two students hand in, with
+    different ids, so each is graded on their own data where an exercise has some."""
+    mode = ["--graded"] if graded else []
     status, _, err = run_cli(
-        capsys, "notebooks", "nbgrader", "--src", str(source), "--out", str(course)
+        capsys, "notebooks", "nbgrader", "--src", str(source), "--out", str(course), *mode
     )
     assert status == 0, err
     nbgrader(course, "generate_assignment", "*")
@@ -544,6 +548,13 @@ def grade_course(source: Path, course: Path, capsys: pytest.CaptureFixture[str])
                 assert text not in visible, f"{path.name}: the release gives away {text!r}"
         copy_sources = [c.source for c in student_copy(read(path)).cells]
         released = [c.source.removesuffix(f"\n{CODE_STUB}") for c in release.cells]
+        if graded:  # the visible checks check the form only, and the key is nowhere
+            forms = [i for i, c in enumerate(released) if "check_form(" in c]
+            assert len(forms) == len(keys), f"{path.name}: {len(forms)} form checks"
+            assert all(CHECK.fullmatch(copy_sources[i].strip()) for i in forms), path.name
+            released = [c for i, c in enumerate(released) if i not in forms]
+            copy_sources = [c for i, c in enumerate(copy_sources) if i not in forms]
+            assert "_KEY_SOURCE" not in visible and "_answer_key" not in visible
         assert released == copy_sources, f"{path.name}: the release is not the student copy"
 
         # Two students: one hands in the worked solutions; the other typical answers, in turn
@@ -613,6 +624,13 @@ def test_nbgrader_generates_autogrades_and_exports_the_small_course(
     small_course: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     grade_course(small_course, tmp_path / "grading", capsys)
+
+
+@needs_nbgrader_run
+def test_nbgrader_grades_the_small_course_in_graded_mode(
+    small_course: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    grade_course(small_course, tmp_path / "grading", capsys, graded=True)
 
 
 def course_not_in_exercise_form() -> str | None:
