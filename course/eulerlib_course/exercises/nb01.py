@@ -31,6 +31,34 @@ def _frame() -> NDArray[np.float64]:
     return euler_to_matrix(_FRAME_ANGLES, "ZYX", degrees=True)
 
 
+def _some_frame(rng: np.random.Generator) -> NDArray[np.float64]:
+    """A student's turned frame: yaw, pitch, roll in whole degrees, away from lock."""
+    yaw, roll = (float(a) for a in rng.integers(-170, 171, 2))
+    pitch = float(rng.integers(-60, 61))
+    return euler_to_matrix([yaw, pitch, roll], "ZYX", degrees=True)
+
+
+def _judge_frame(frame: NDArray[np.float64]) -> ArrayJudge:
+    return ArrayJudge(
+        frame.T @ np.array(_POINT),
+        what="your coordinates",
+        tol=1e-9,
+        mistakes=(
+            Mistake(
+                frame @ np.array(_POINT),
+                "this is the point turned by F_ex (the active reading, F p); the point stays "
+                "where it is and the axes are turned, so its coordinates are its components "
+                "along the columns of F_ex",
+            ),
+            Mistake(
+                _POINT,
+                "these are the coordinates in the fixed frame, where the point was given; "
+                "along the turned axes they are other numbers",
+            ),
+        ),
+    )
+
+
 EXERCISES = [
     Exercise(
         id="01.1",
@@ -129,24 +157,9 @@ EXERCISES = [
     Exercise(
         id="01.4",
         level="extend",
-        judge=ArrayJudge(
-            _frame().T @ np.array(_POINT),
-            what="your coordinates",
-            tol=1e-9,
-            mistakes=(
-                Mistake(
-                    _frame() @ np.array(_POINT),
-                    "this is the point turned by F_ex (the active reading, F p); the point stays "
-                    "where it is and the axes are turned, so its coordinates are its components "
-                    "along the columns of F_ex",
-                ),
-                Mistake(
-                    _POINT,
-                    "these are the coordinates in the fixed frame, where the point was given; "
-                    "along the turned axes they are other numbers",
-                ),
-            ),
-        ),
+        judge=_judge_frame(_frame()),
+        per_student=_some_frame,
+        judged=_judge_frame,
         given=_frame,
         examples=(
             Example("F_ex.T @ p_ex", "correct"),
