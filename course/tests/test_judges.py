@@ -379,3 +379,47 @@ def test_given_returns_a_fresh_copy() -> None:
         assert all(
             np.any(array != 0) for array in (again if isinstance(again, tuple) else (again,))
         )
+
+
+# --- the course's own exercises with SymPy symbols made again ---------------------------------
+
+
+@pytest.mark.parametrize("assumptions", [{}, {"real": True}, {"positive": True}])
+def test_symbolic_exercises_take_symbols_with_or_without_assumptions(assumptions) -> None:
+    from eulerlib.symbolic import euler_matrix
+
+    alpha, beta, gamma = sp.symbols("alpha beta gamma", **assumptions)
+    assert check("03.1", euler_matrix((alpha, beta, gamma), "ZXZ")).status == "correct"
+    wrong = check("03.1", euler_matrix((alpha, beta, gamma), "ZYZ"))
+    assert wrong.status == "off" and "about y" in wrong.message
+    assert check("06.2", alpha + gamma).status == "correct"
+    assert check("06.2", alpha - gamma).status == "off"
+
+
+# --- predictions -------------------------------------------------------------------------------
+
+
+def test_a_prediction_is_recorded_before_the_computation_that_settles_it() -> None:
+    from eulerlib_course.exercises.predictions import forget, prediction, settle
+
+    forget()
+    computed = []
+    refused = settle("07.2", lambda: computed.append("yaw") or "the yaw")
+    assert refused.startswith("predict first") and computed == []
+    assert check("07.2", ("a", ...)).status == "not yet"  # the option alone is recorded
+    assert prediction("07.2") == ("a", ...)
+    assert settle("07.2", lambda: "the yaw") == "the yaw"
+    # after the computation the recorded option counts, whatever the cell says now
+    late = check("07.2", ("c", 160.0))
+    assert late.status == "off" and "made before the computation" in late.message
+    assert check("07.2", ("a", 160.0)).status == "off"
+    forget()
+    assert check("07.2", ("c", 160.0)).status == "correct"
+    forget()
+
+
+def test_predict_refuses_an_exercise_that_is_not_a_prediction() -> None:
+    from eulerlib_course.exercises import predict
+
+    with pytest.raises(ValueError, match="not a prediction"):
+        predict("05.1", [1, 2, 3])
