@@ -28,6 +28,6 @@ the notebooks' interactive explorer:
 >>> from eulerlib_course import check, given
 """
 
-from eulerlib_course.exercises import check, given
+from eulerlib_course.exercises import check, given, predict, settle, student_name
 
-__all__ = ["check", "given"]
+__all__ = ["check", "given", "predict", "settle", "student_name"]

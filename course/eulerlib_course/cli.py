@@ -3,6 +3,8 @@
 * ``eulerlib-course notebooks``: make student copies of the notebooks or their nbgrader
   edition, or re-execute and normalize them;
 * ``eulerlib-course figures``: redraw every figure of the course;
+* ``eulerlib-course key remove``: delete the answer key from a students' environment (graded
+  mode of the nbgrader edition);
 * ``eulerlib-course site``: build the course website from the stored notebooks.
 
 Each subcommand is set up by a function of :mod:`eulerlib_course.commands` that adds the
@@ -25,6 +27,10 @@ from eulerlib_course._extras import MissingExtraError
 #: Subcommand name → (function that configures its sub-parser, one-line help).
 SUBCOMMANDS: dict[str, tuple[Callable[[argparse.ArgumentParser], None], str]] = {
     "figures": (commands.configure_figures, "redraw every figure of the course"),
+    "key": (
+        commands.configure_key,
+        "remove the answer key from a students' environment (graded mode)",
+    ),
     "notebooks": (
         commands.configure_notebooks,
         "student copies or an nbgrader edition of the course notebooks, or refresh them",

@@ -89,6 +89,11 @@ def configure_notebooks(parser: argparse.ArgumentParser) -> None:
         "--src", type=Path, help="folder of the course notebooks (default: notebooks/)"
     )
     student.add_argument(
+        "--student",
+        metavar="NAME",
+        help="make the copies for this student: their own data in every exercise that has some",
+    )
+    student.add_argument(
         "--force", action="store_true", help="overwrite student copies already in --out"
     )
     grading = actions.add_parser(
@@ -106,6 +111,12 @@ def configure_notebooks(parser: argparse.ArgumentParser) -> None:
     )
     grading.add_argument(
         "--force", action="store_true", help="overwrite the files of an earlier edition in --out"
+    )
+    grading.add_argument(
+        "--graded",
+        action="store_true",
+        help="graded mode: the visible checks check the form only, the hidden tests carry the "
+        "answer key (the students' environment runs `eulerlib-course key remove`)",
     )
     refresh = actions.add_parser(
         "refresh",
@@ -140,35 +151,59 @@ def _course_folder(folder: Path, instead: str) -> Path:
     return folder
 
 
+def configure_key(parser: argparse.ArgumentParser) -> None:
+    """Add the ``remove`` action to the ``key`` sub-parser."""
+    actions = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
+    remove = actions.add_parser(
+        "remove",
+        help="remove the answer key from this environment (students' side of graded mode)",
+        description="Delete the answer key modules from the installed eulerlib_course, so that "
+        "nothing in this environment can compute a graded reference (graded mode).",
+    )
+    remove.add_argument(
+        "--package", type=Path, help="the eulerlib_course folder (default: the installed one)"
+    )
+    parser.set_defaults(run=run_key)
+
+
+def run_key(args: argparse.Namespace) -> int:
+    """Carry out ``eulerlib-course key remove``."""
+    from eulerlib_course.exercises.keyless import remove_answer_key
+
+    removed = remove_answer_key(args.package)
+    print(f"removed {len(removed)} files of the answer key")
+    return 0
+
+
 def run_notebooks(args: argparse.Namespace) -> int:
     """Carry out ``eulerlib-course notebooks student|nbgrader|refresh``."""
     if args.action == "nbgrader":
         require(GRADING_TOOLS, extra="teach", needed_by="eulerlib-course notebooks nbgrader")
-        return _nbgrader(args.src, args.out, force=args.force)
+        return _nbgrader(args.src, args.out, force=args.force, graded=args.graded)
     require(NOTEBOOK_TOOLS, extra=None, needed_by=f"eulerlib-course notebooks {args.action}")
     if args.action == "refresh":
         return _refresh(args.notebooks)
-    return _student(args.src, args.out, force=args.force)
+    return _student(args.src, args.out, force=args.force, student=args.student)
 
 
-def _student(src: Path | None, out: Path, *, force: bool) -> int:
+def _student(src: Path | None, out: Path, *, force: bool, student: str | None = None) -> int:
     from eulerlib_course.student import write_student_copies
 
     source = src if src is not None else _course_folder(NOTEBOOK_FOLDER, "pass --src DIR")
     try:
-        written = write_student_copies(source, out, force=force)
+        written = write_student_copies(source, out, force=force, student=student)
     except FileExistsError as error:
         raise ValueError(f"{error}; pass --force to overwrite them") from None
     print(f"wrote {len(written)} student copies to {out}")
     return 0
 
 
-def _nbgrader(src: Path | None, out: Path, *, force: bool) -> int:
+def _nbgrader(src: Path | None, out: Path, *, force: bool, graded: bool = False) -> int:
     from eulerlib_course.nbgrader_edition import write_nbgrader_edition
 
     source = src if src is not None else _course_folder(NOTEBOOK_FOLDER, "pass --src DIR")
     try:
-        edition = write_nbgrader_edition(source, out, force=force)
+        edition = write_nbgrader_edition(source, out, force=force, graded=graded)
     except FileExistsError as error:
         raise ValueError(f"{error}; pass --force to overwrite them") from None
     print(f"wrote {len(edition.assignments)} nbgrader assignments and nbgrader_config.py to {out}")

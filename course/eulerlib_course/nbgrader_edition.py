@@ -27,6 +27,27 @@ question's data and ``answer_k = ...``), the ``solution`` cell (the worked answe
   an answer lost its points. The reference and the tolerance stay in the key: the same judge
   decides the self-check and the grade, and accepts every answer that is equally right.
 
+After the first cell that imports from ``eulerlib_course`` comes the **name cell** of the
+student copies (:func:`eulerlib_course.student.name_cell_source`), as an ungraded answer cell:
+the student types their student id in it, so that while they work the exercises give the data
+that nbgrader grades them on (at grading time the student id comes from the submission folder,
+see :mod:`eulerlib_course.exercises.seeds`).
+
+**Two modes.** In *practice mode* (the default) the visible check is the course's check, with its
+full diagnosis, and the hidden test asks the installed answer key. In *graded mode*
+(``graded=True``, ``--graded``) nothing on the students' side can give a graded reference away:
+
+* the visible check cell calls :func:`~eulerlib_course.exercises.graded.check_form` with the form
+  of the answer written into it (a number, a shape, the options): it says whether the answer has
+  that form, never whether it is right;
+* the hidden test carries the notebook's answer key as source text (the key module ``nbNN``) and
+  grades with it (:func:`~eulerlib_course.exercises.graded.grade`), for the data of the student
+  whose submission it runs in; nbgrader strips it from the release and puts it back when it
+  grades;
+* the students' environment has the course without its answer key
+  (``eulerlib-course key remove`` in it, see the README): a key installed next to the release
+  would compute any student's reference from their data.
+
 Every other cell — the explanations, the demonstrations, the question — is read-only (nbgrader's
 ``locked`` cells, which ``autograde`` restores from the source before it runs a submission).
 Outputs are cleared; nbgrader's metadata follows schema version :data:`SCHEMA_VERSION`, the one
@@ -44,6 +65,7 @@ nbgrader (the ``teach`` extra).
 from __future__ import annotations
 
 import copy
+import inspect
 import re
 import shutil
 from collections.abc import Iterator
@@ -56,7 +78,9 @@ from nbconvert.preprocessors import ClearOutputPreprocessor
 
 from eulerlib._validation import check_flag
 from eulerlib_course.exercises import exercises
+from eulerlib_course.exercises.graded import form_of
 from eulerlib_course.notebook_form import normalize_notebook, read_notebook, write_notebook
+from eulerlib_course.student import name_cell_source
 
 __all__ = [
     "CODE_STUB",
@@ -131,19 +155,60 @@ def _answer_cell(exercise: Any, solution: Any, exercise_id: str) -> Any:
     return cell
 
 
-def _test_cell(check: Any, exercise_id: str, answer: str, points: int) -> Any:
+def _key_source(exercise_id: str) -> str:
+    """The source of the key module of ``exercise_id``'s notebook, importing absolutely."""
+    import importlib
+
+    package = "eulerlib_course.exercises"
+    module = importlib.import_module(f"{package}.nb{exercise_id[:2]}")
+    return re.sub(
+        r"^from \.(\w+) import",
+        rf"from {package}.\1 import",
+        inspect.getsource(module),
+        flags=re.MULTILINE,
+    )
+
+
+def _form_call(exercise_id: str, answer: str) -> str:
+    form = form_of(exercises()[exercise_id].judge)
+    arguments = "".join(f", {name}={value!r}" for name, value in form.items())
+    return (
+        "from eulerlib_course.exercises.graded import check_form\n\n"
+        f'check_form("{exercise_id}", {answer}{arguments})'
+    )
+
+
+def _test_cell(
+    check: Any, exercise_id: str, answer: str, points: int, *, graded: bool = False
+) -> Any:
     grade_id = "test-" + exercise_id.replace(".", "-")
-    hidden = [
-        BEGIN_HIDDEN_TESTS,
-        "# graded by the answer key itself, whatever the notebook may have redefined",
-        "import eulerlib_course.exercises as _answer_key",
-        "",
-        f'_feedback = _answer_key.check("{exercise_id}", {answer})',
-        'assert _feedback.status == "correct", str(_feedback)',
-        END_HIDDEN_TESTS,
-    ]
+    if graded:
+        visible = _form_call(exercise_id, answer)
+        hidden = [
+            BEGIN_HIDDEN_TESTS,
+            "# graded by the answer key of this notebook, carried here: the release has none",
+            "from eulerlib_course.exercises.graded import grade as _grade",
+            "",
+            f"_KEY_SOURCE = {_key_source(exercise_id)!r}",
+            '_key = {"__name__": "answer_key"}',
+            f'exec(compile(_KEY_SOURCE, "answer key {exercise_id[:2]}", "exec"), _key)',
+            f'_feedback = _grade(_key["EXERCISES"], "{exercise_id}", {answer})',
+            'assert _feedback.status == "correct", str(_feedback)',
+            END_HIDDEN_TESTS,
+        ]
+    else:
+        visible = check.source.strip()
+        hidden = [
+            BEGIN_HIDDEN_TESTS,
+            "# graded by the answer key itself, whatever the notebook may have redefined",
+            "import eulerlib_course.exercises as _answer_key",
+            "",
+            f'_feedback = _answer_key.check("{exercise_id}", {answer})',
+            'assert _feedback.status == "correct", str(_feedback)',
+            END_HIDDEN_TESTS,
+        ]
     cell = nbformat.v4.new_code_cell(
-        "\n".join([check.source.strip(), *hidden]), metadata=_without_course_tags(check)
+        "\n".join([visible, *hidden]), metadata=_without_course_tags(check)
     )
     cell.metadata["nbgrader"] = _nbgrader(grade_id, grade=True, solution=False, locked=True)
     cell.metadata["nbgrader"]["points"] = points
@@ -164,7 +229,14 @@ def _cleared(notebook: Any) -> Any:
     return result
 
 
-def nbgrader_notebook(notebook: Any, name: str) -> Any:
+def _name_cell() -> Any:
+    source = "\n".join([name_cell_source(None), BEGIN_SOLUTION, END_SOLUTION])
+    cell = nbformat.v4.new_code_cell(source)
+    cell.metadata["nbgrader"] = _nbgrader("student-name", grade=False, solution=True, locked=False)
+    return cell
+
+
+def nbgrader_notebook(notebook: Any, name: str, *, graded: bool = False) -> Any:
     """The nbgrader source version of one course notebook (see the module docstring).
 
     Parameters
@@ -173,6 +245,9 @@ def nbgrader_notebook(notebook: Any, name: str) -> Any:
         A course notebook (teacher's edition); it is left unchanged.
     name : str
         Its file name, ``NN_name.ipynb``: the exercises in it must be ``NN.1``, ``NN.2``, …
+    graded : bool, optional
+        Graded mode (see the module docstring): the visible checks check the form only and the
+        hidden tests carry the answer key.
 
     Returns
     -------
@@ -198,14 +273,14 @@ def nbgrader_notebook(notebook: Any, name: str) -> Any:
     ... ])
     >>> edition = nbgrader_notebook(course, "05_matrix_to_angles.ipynb")
     >>> [cell.metadata["nbgrader"]["grade_id"] for cell in edition.cells]
-    ['cell-000', 'answer-05-1', 'test-05-1']
-    >>> print(edition.cells[1].source)
+    ['cell-000', 'student-name', 'answer-05-1', 'test-05-1']
+    >>> print(edition.cells[2].source)
     R_ex = given("05.1")
     answer_1 = ...
     ### BEGIN SOLUTION
     answer_1 = [-100, 35, 160]
     ### END SOLUTION
-    >>> edition.cells[2].metadata["nbgrader"]["points"]
+    >>> edition.cells[3].metadata["nbgrader"]["points"]
     1
     """
     match = _NOTEBOOK_NAME.fullmatch(name)
@@ -223,6 +298,9 @@ def nbgrader_notebook(notebook: Any, name: str) -> Any:
         kind = _kind(cell)
         if kind is None:
             result.append(_lock(cell, f"cell-{len(result):03d}"))
+            if cell.cell_type == "code" and "from eulerlib_course import" in cell.source:
+                if not any(c.metadata["nbgrader"]["grade_id"] == "student-name" for c in result):
+                    result.append(_name_cell())
             index += 1
             continue
         count += 1
@@ -247,7 +325,7 @@ def nbgrader_notebook(notebook: Any, name: str) -> Any:
             raise ValueError(f"{where}: the answer key has no exercise {exercise_id}")
         points = POINTS[key[exercise_id].level]
         result.append(_answer_cell(exercise, solution, exercise_id))
-        result.append(_test_cell(check, exercise_id, answer, points))
+        result.append(_test_cell(check, exercise_id, answer, points, graded=graded))
         index += 3
     edition.cells = result
     for position, cell in enumerate(edition.cells):
@@ -326,7 +404,7 @@ def _mentions_data(notebook: Any, data: Path) -> bool:
     return bool(re.search(r"""["']data(?:["'/\\])""", code)) or any(n in code for n in names)
 
 
-def nbgrader_edition(source: str | Path) -> Edition:
+def nbgrader_edition(source: str | Path, *, graded: bool = False) -> Edition:
     """Build the nbgrader edition of every numbered notebook (``NN_*.ipynb``) in ``source``.
 
     Raises
@@ -348,7 +426,7 @@ def nbgrader_edition(source: str | Path) -> Edition:
     for path in paths:
         notebook = read_notebook(path)
         folder = Path("source", path.stem)
-        notebooks[folder / path.name] = nbgrader_notebook(notebook, path.name)
+        notebooks[folder / path.name] = nbgrader_notebook(notebook, path.name, graded=graded)
         text = "\n".join(cell.source for cell in notebook.cells if cell.cell_type == "markdown")
         if glossary is not None and _GLOSSARY in text:
             notebooks[folder / _GLOSSARY] = glossary
@@ -359,7 +437,9 @@ def nbgrader_edition(source: str | Path) -> Edition:
     return Edition(notebooks, files, nbgrader_config())
 
 
-def write_nbgrader_edition(source: str | Path, out: str | Path, *, force: bool = False) -> Edition:
+def write_nbgrader_edition(
+    source: str | Path, out: str | Path, *, force: bool = False, graded: bool = False
+) -> Edition:
     """Write the nbgrader edition of the notebooks in ``source`` into the course folder ``out``.
 
     Parameters
@@ -372,6 +452,8 @@ def write_nbgrader_edition(source: str | Path, out: str | Path, *, force: bool =
     force : bool, optional
         Overwrite files of an earlier edition. Without it nothing is written when any of the
         files exists.
+    graded : bool, optional
+        Graded mode (see the module docstring); practice mode without it.
 
     Returns
     -------
@@ -389,10 +471,11 @@ def write_nbgrader_edition(source: str | Path, out: str | Path, *, force: bool =
         If files of the edition exist already and ``force`` is not set; the message says how many.
     """
     force = check_flag(force, "force")
+    graded = check_flag(graded, "graded")
     out = Path(out)
     if out.resolve() == Path(source).resolve():
         raise ValueError("the nbgrader edition must go to another folder than the course notebooks")
-    edition = nbgrader_edition(source)
+    edition = nbgrader_edition(source, graded=graded)
     existing = [path for path in edition.paths() if (out / path).exists()]
     if existing and not force:
         total = len(list(edition.paths()))

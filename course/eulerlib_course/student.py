@@ -7,6 +7,12 @@ copy is the same notebook with the ``solution`` cells removed and every output c
 normal form of :mod:`eulerlib_course.notebook_form`; run top to bottom, each check then finds
 the ``...`` and says "not yet" until the learner fills in an answer.
 
+Each copy of a notebook that uses the exercises gets, after its first cell that imports from
+``eulerlib_course``, a cell that says whose data the exercises give (:mod:`.exercises.seeds`):
+``student_name("NAME")`` in a copy made for a named student, ``student_name(...)`` otherwise,
+for the student to type their name in. Exercises that make data per student then give that student
+data of their own, and check answers against the reference of those data.
+
 The copy is made by nbconvert's ``TagRemovePreprocessor`` (removing the cells tagged
 ``solution``) and ``ClearOutputPreprocessor``. :func:`student_copy` turns one notebook into its
 copy; :func:`write_student_copies` writes a copy of every notebook of a folder into another
@@ -26,7 +32,13 @@ from nbconvert.preprocessors import ClearOutputPreprocessor, TagRemovePreprocess
 from eulerlib._validation import check_flag
 from eulerlib_course.notebook_form import normalize_notebook, read_notebook, write_notebook
 
-__all__ = ["SOLUTION_TAG", "student_copy", "student_copy_paths", "write_student_copies"]
+__all__ = [
+    "SOLUTION_TAG",
+    "name_cell_source",
+    "student_copy",
+    "student_copy_paths",
+    "write_student_copies",
+]
 
 #: The tag of the cells a student copy leaves out.
 SOLUTION_TAG = "solution"
@@ -34,13 +46,51 @@ SOLUTION_TAG = "solution"
 DATA_FOLDER = "data"
 
 
-def student_copy(notebook: Any) -> Any:
+def name_cell_source(student: str | None) -> str:
+    """The source of the cell that names the student whose data the exercises give.
+
+    Examples
+    --------
+    >>> print(name_cell_source("ada"))
+    # whose data the exercises give: this copy is ada's
+    from eulerlib_course import student_name
+    <BLANKLINE>
+    student_name('ada')
+    """
+    if student is None:
+        head = (
+            "# whose data the exercises give: type your name in place of the ..., then run the\n"
+            "# notebook from the top (leave the ... for the data of the teacher's edition)"
+        )
+        call = "student_name(...)"
+    else:
+        head = f"# whose data the exercises give: this copy is {student}'s"
+        call = f"student_name({student!r})"
+    return f"{head}\nfrom eulerlib_course import student_name\n\n{call}"
+
+
+def _check_student(student: object) -> str | None:
+    if student is None:
+        return None
+    if not isinstance(student, str) or not student.strip() or not student.isprintable():
+        raise ValueError(f"student must be a name such as 'ada', got {student!r}")
+    return student.strip()
+
+
+def _imports_course(cell: Any) -> bool:
+    return cell.cell_type == "code" and "from eulerlib_course import" in cell.source
+
+
+def student_copy(notebook: Any, student: str | None = None) -> Any:
     """A copy of ``notebook`` without the cells tagged ``solution`` and without any outputs.
 
     Parameters
     ----------
     notebook : nbformat.NotebookNode
         A course notebook; it is left unchanged.
+    student : str, optional
+        The student the copy is for; their name goes in the copy's name cell (see the module
+        docstring). Without it the name cell holds ``student_name(...)``.
 
     Returns
     -------
@@ -62,6 +112,12 @@ def student_copy(notebook: Any) -> Any:
     remove = TagRemovePreprocessor(remove_cell_tags={SOLUTION_TAG})
     for preprocessor in (remove, ClearOutputPreprocessor()):
         result, resources = preprocessor.preprocess(result, resources)
+    student = _check_student(student)
+    first = next((i for i, cell in enumerate(result.cells) if _imports_course(cell)), None)
+    if first is not None:
+        import nbformat
+
+        result.cells.insert(first + 1, nbformat.v4.new_code_cell(name_cell_source(student)))
     for index, cell in enumerate(result.cells):  # ids by position, as in the normal form
         cell["id"] = f"cell-{index:03d}"
     return result
@@ -83,7 +139,9 @@ def student_copy_paths(source: str | Path, out: str | Path) -> list[tuple[Path, 
     return [(path, out / path.name) for path in sorted(source.glob("*.ipynb"))]
 
 
-def write_student_copies(source: str | Path, out: str | Path, *, force: bool = False) -> list[Path]:
+def write_student_copies(
+    source: str | Path, out: str | Path, *, force: bool = False, student: str | None = None
+) -> list[Path]:
     """Write a student copy of every notebook in ``source`` into ``out``; return the paths.
 
     Parameters
@@ -95,6 +153,8 @@ def write_student_copies(source: str | Path, out: str | Path, *, force: bool = F
     force : bool, optional
         Overwrite copies, and copies of the recorded data, that already exist in ``out``.
         Without it nothing is written when any of them exists.
+    student : str, optional
+        The student the copies are for (their own data in every exercise that has some).
 
     The folder ``data/`` next to the notebooks (recorded data that notebooks read) is copied
     into ``out`` as it is, so that the copies run there too.
@@ -107,13 +167,15 @@ def write_student_copies(source: str | Path, out: str | Path, *, force: bool = F
     Raises
     ------
     ValueError
-        If ``source`` is not a folder or ``out`` is the same folder.
+        If ``source`` is not a folder or ``out`` is the same folder, or ``student`` is not a
+        name.
     TypeError
         If ``force`` is not True or False.
     FileExistsError
         If some copies exist already and ``force`` is not set; the message says how many.
     """
     force = check_flag(force, "force")
+    student = _check_student(student)
     pairs = student_copy_paths(source, out)
     data = [
         (path, Path(out) / path.relative_to(source))
@@ -128,7 +190,7 @@ def write_student_copies(source: str | Path, out: str | Path, *, force: bool = F
         )
     Path(out).mkdir(parents=True, exist_ok=True)
     for path, copy_path in pairs:
-        write_notebook(student_copy(read_notebook(path)), copy_path)
+        write_notebook(student_copy(read_notebook(path), student), copy_path)
     for path, copy_path in data:  # the recorded data some notebooks read, byte for byte
         copy_path.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(path, copy_path)

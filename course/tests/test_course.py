@@ -20,7 +20,7 @@ import pytest
 
 from eulerlib_course import cli
 from eulerlib_course.notebook_form import KERNELSPEC, is_normalized, normalize_notebook
-from eulerlib_course.student import student_copy, write_student_copies
+from eulerlib_course.student import name_cell_source, student_copy, write_student_copies
 
 REPO = Path(__file__).resolve().parents[2]
 NOTEBOOK_DIR = REPO / "notebooks"
@@ -177,7 +177,13 @@ def test_student_copy_has_no_solutions_and_no_outputs(path: Path) -> None:
     assert not any(cell.get("outputs") for cell in student.cells if cell.cell_type == "code")
     assert all(cell.execution_count is None for cell in student.cells if cell.cell_type == "code")
     kept = [c.source for c in original.cells if "solution" not in tags_of(c)]
+    first = next(i for i, source in enumerate(kept) if "from eulerlib_course import" in source)
+    kept.insert(first + 1, name_cell_source(None))  # whose data: the student types a name
     assert [c.source for c in student.cells] == kept
+    named = student_copy(original, "ada")
+    assert [c.source for c in named.cells if "student_name(" in c.source] == [
+        name_cell_source("ada")
+    ]
     for tag in ("exercise", "check"):
         count = sum(tag in tags_of(cell) for cell in original.cells)
         assert sum(tag in tags_of(cell) for cell in student.cells) == count

@@ -25,7 +25,9 @@ from typing import Any
 import nbformat
 import pytest
 
-from eulerlib_course.exercises import ChoiceJudge, Exercise, exercises
+from eulerlib_course.exercises import ChoiceJudge, Exercise, exercises, given
+from eulerlib_course.exercises import check as check_answer
+from eulerlib_course.exercises.seeds import as_student
 from eulerlib_course.student import student_copy
 
 REPO = Path(__file__).resolve().parents[2]
@@ -201,3 +203,84 @@ def check_every_example(path: Path, copy: Any, namespace: dict[str, Any]) -> Non
             feedback, _ = run(check.source, namespace)
             assert feedback.status == example.status, f"{example.code!r}: {feedback}"
             assert example.says in feedback.message, f"{example.code!r}: {feedback}"
+
+
+# --- every student copy, run for two students ------------------------------------------------
+
+STUDENTS = ("ada", "grace")
+
+
+def run_copy_with_solutions(path: Path, student: str) -> dict[str, Any]:
+    """Run every code cell of ``student``'s copy of a notebook, each worked solution of the
+    teacher's edition put back after its exercise cell; return each exercise's feedback and data.
+    """
+    import matplotlib.pyplot as plt
+
+    from eulerlib_course.exercises.predictions import forget
+
+    teacher = read(path)
+    solutions = {
+        CHECK_CELL.fullmatch(check.source.strip()).group(1): solution  # type: ignore[union-attr]
+        for _, solution, check in exercise_cells(teacher)
+    }
+    copy = student_copy(teacher, student)
+    namespace: dict[str, Any] = {}
+    results: dict[str, Any] = {}
+    forget()
+    with as_student(None):
+        for cell in copy.cells:
+            if cell.cell_type != "code":
+                continue
+            value, _ = run(without_magics(cell.source), namespace)
+            match = CHECK_CELL.fullmatch(cell.source.strip())
+            if "exercise" in tags(cell):
+                exercise_id = f"{number_of(path)}.{PLACEHOLDER.search(cell.source).group(1)[-1]}"  # type: ignore[union-attr]
+                run(solutions[exercise_id].source, namespace)
+            if match:
+                results[match.group(1)] = value
+            plt.close("all")
+    forget()
+    return results
+
+
+@notebook_params
+def test_every_student_copy_runs_for_two_students_and_the_solutions_pass(
+    path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(path.parent)  # where the notebooks read their data from
+    for student in STUDENTS:
+        for exercise_id, feedback in run_copy_with_solutions(path, student).items():
+            assert feedback.status == "correct", f"{student}, {exercise_id}: {feedback}"
+
+
+def test_per_student_data_differ_between_students_and_from_the_teachers() -> None:
+    import numpy as np
+
+    seeded = [e for e in KEY.values() if e.per_student is not None and not e.seed_of]
+    assert len(seeded) >= 6
+    for exercise in seeded:
+        teacher, ada, grace = (exercise.data_for(name) for name in (None, *STUDENTS))
+        assert not np.allclose(ada, grace), exercise.id
+        assert not np.allclose(ada, teacher), exercise.id
+        again = exercise.data_for("ada")
+        assert np.array_equal(ada, again), f"{exercise.id}: the same student, other data"
+        with as_student("ada"):
+            judge = exercise.judge_for()
+        assert not np.allclose(
+            np.asarray(judge.reference, dtype=float),  # type: ignore[attr-defined]
+            np.asarray(exercise.judge.reference, dtype=float),  # type: ignore[attr-defined]
+        ), exercise.id
+
+
+def test_the_judge_checks_against_the_students_own_data() -> None:
+    from eulerlib import matrix_to_euler
+
+    for student in STUDENTS:
+        with as_student(student):
+            R = given("05.1")
+            own = matrix_to_euler(R, "rose", degrees=True)  # the library reads the angles
+            assert check_answer("05.1", own).status == "correct"
+    with as_student("ada"):
+        ada = matrix_to_euler(given("05.1"), "rose", degrees=True)
+    with as_student("grace"):
+        assert check_answer("05.1", ada).status == "off"

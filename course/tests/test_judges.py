@@ -28,6 +28,7 @@ from eulerlib_course.exercises import (
     exercises,
     given,
 )
+from eulerlib_course.exercises.judges import rounded_to
 from eulerlib_course.exercises.reading import Unreadable, read_numbers
 
 QUARTER_Z = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])  # typed in
@@ -119,7 +120,7 @@ def test_matrix_diagnoses() -> None:
     assert "not orthonormal" in judge.judge(2 * QUARTER_Z).message
     other = Rotation.from_euler("x", 30, degrees=True).as_matrix()
     message = judge.judge(other).message
-    assert "entries" in message and "-1" not in message
+    assert "is not it" in message and "-1" not in message and "entr" not in message
 
 
 def test_complex_matrix_is_refused_not_accepted() -> None:
@@ -219,11 +220,67 @@ def test_an_exercise_mistake_is_named_when_the_answer_gives_its_rotation() -> No
     assert judge.judge([0.0, 90.0, 45.0]).status == "correct"
 
 
-def test_a_far_rotation_gets_a_geometric_hint_without_the_reference() -> None:
-    message = AnglesJudge([10.0, 20.0, 30.0], "ZYX").judge([50, -40, 100]).message
-    gap = Rotation.from_euler("ZYX", [[10, 20, 30], [50, -40, 100]], degrees=True)
-    expected = (gap[0].inv() * gap[1]).magnitude() * 180 / np.pi
-    assert f"{expected:.3g}° away" in message
+def test_a_far_rotation_gets_no_distance_that_a_search_could_follow() -> None:
+    judge = AnglesJudge([10.0, 20.0, 30.0], "ZYX", hint="read each angle off its entries")
+    far = [judge.judge(angles).message for angles in ([50, -40, 100], [12, 25, 20])]
+    assert far[0] == far[1] and "read each angle off its entries" in far[0]
+    assert not any(ch.isdigit() for ch in far[0])
+
+
+def test_close_is_a_coarse_band_without_a_side() -> None:
+    # within a degree of the rotation (SciPy measures it), but not within the tolerance
+    judge = AnglesJudge([10.0, 20.0, 30.0], "ZYX")
+    near = [[10.3, 20.0, 30.0], [9.7, 20.0, 30.0], [10.0, 20.0, 30.4]]
+    for angles in near:
+        gap = Rotation.from_euler("ZYX", [[10, 20, 30], angles], degrees=True)
+        assert np.degrees((gap[0].inv() * gap[1]).magnitude()) < 1.0
+    messages = {judge.judge(angles).message for angles in near}
+    assert len(messages) == 1 and "close" in messages.pop()
+    number = NumberJudge(30.0, unit="deg", what="your angle")
+    assert number.judge(30.4).message == number.judge(29.6).message
+    assert "large" not in number.judge(40).message and "small" not in number.judge(20).message
+    assert number.judge(40).message == number.judge(20).message
+
+
+def test_rounded_hand_worked_answers_pass() -> None:
+    judge = ArrayJudge([0.5, 0.0, math.sqrt(3) / 2], tol=rounded_to(3))
+    assert judge.judge([0.5, 0, 0.866]).status == "correct"
+    assert "close" in judge.judge([0.5, 0, 0.86]).message
+
+
+def test_sympy_symbols_made_again_with_or_without_assumptions() -> None:
+    a, b = sp.symbols("a b", real=True)
+    judge = ExpressionJudge(sp.cos(a) * sp.sin(b))
+    for plain in (sp.symbols("a b"), sp.symbols("a b", positive=True), (a, b)):
+        assert judge.judge(sp.cos(plain[0]) * sp.sin(plain[1])).status == "correct"
+        assert judge.judge(sp.sin(plain[0]) * sp.sin(plain[1])).status == "off"
+    matrix = ExpressionJudge(sp.Matrix([[sp.cos(a), -sp.sin(a)], [sp.sin(a), sp.cos(a)]]))
+    x = sp.Symbol("a")
+    assert matrix.judge(sp.Matrix([[sp.cos(x), -sp.sin(x)], [sp.sin(x), sp.cos(x)]]))
+
+
+@pytest.mark.parametrize(
+    "answer", [np.float32(0.5), np.float64(0.5), np.array(0.5), 0.5, sp.Rational(1, 2)]
+)
+def test_numbers_in_any_reasonable_form_are_read(answer) -> None:
+    assert NumberJudge(0.5).judge(answer).status == "correct"
+    vector = ArrayJudge([0.5, 1.0])
+    for form in ([answer, 1], (answer, 1), np.array([answer, 1], dtype=object)):
+        assert vector.judge(form).status == "correct"
+
+
+@pytest.mark.parametrize(
+    ("answer", "words"), [("x", "is text"), (None, "is None"), (2j, "imaginary")]
+)
+def test_text_none_and_complex_get_one_line(answer, words) -> None:
+    feedback = check("09.1", answer)
+    assert feedback.status == "off" and words in feedback.message and "\n" not in str(feedback)
+
+
+@pytest.mark.parametrize("blank", [..., "", "   "])
+def test_a_blank_answer_is_no_answer_yet(blank) -> None:
+    feedback = check("09.1", blank)
+    assert feedback.status == "not yet" and "no answer yet" in feedback.message
 
 
 # --- quaternions -----------------------------------------------------------------------------
@@ -237,7 +294,7 @@ def test_quaternion_double_cover_and_layouts() -> None:
     assert "wrong order" in judge.judge(np.roll(q, 1)).message  # (w, x, y, z)
     conjugate = q * [-1, -1, -1, 1]
     assert "conjugate" in judge.judge(conjugate).message
-    assert "length 2" in judge.judge(2 * q).message
+    assert "not of length 1" in judge.judge(2 * q).message
     first = QuaternionJudge(np.roll(q, 1), scalar_first=True)
     assert first.judge(np.roll(q, 1)).status == "correct"
     assert "scalar-first" in first.judge(q).message
@@ -322,3 +379,47 @@ def test_given_returns_a_fresh_copy() -> None:
         assert all(
             np.any(array != 0) for array in (again if isinstance(again, tuple) else (again,))
         )
+
+
+# --- the course's own exercises with SymPy symbols made again ---------------------------------
+
+
+@pytest.mark.parametrize("assumptions", [{}, {"real": True}, {"positive": True}])
+def test_symbolic_exercises_take_symbols_with_or_without_assumptions(assumptions) -> None:
+    from eulerlib.symbolic import euler_matrix
+
+    alpha, beta, gamma = sp.symbols("alpha beta gamma", **assumptions)
+    assert check("03.1", euler_matrix((alpha, beta, gamma), "ZXZ")).status == "correct"
+    wrong = check("03.1", euler_matrix((alpha, beta, gamma), "ZYZ"))
+    assert wrong.status == "off" and "about y" in wrong.message
+    assert check("06.2", alpha + gamma).status == "correct"
+    assert check("06.2", alpha - gamma).status == "off"
+
+
+# --- predictions -------------------------------------------------------------------------------
+
+
+def test_a_prediction_is_recorded_before_the_computation_that_settles_it() -> None:
+    from eulerlib_course.exercises.predictions import forget, prediction, settle
+
+    forget()
+    computed = []
+    refused = settle("07.2", lambda: computed.append("yaw") or "the yaw")
+    assert refused.startswith("predict first") and computed == []
+    assert check("07.2", ("a", ...)).status == "not yet"  # the option alone is recorded
+    assert prediction("07.2") == ("a", ...)
+    assert settle("07.2", lambda: "the yaw") == "the yaw"
+    # after the computation the recorded option counts, whatever the cell says now
+    late = check("07.2", ("c", 160.0))
+    assert late.status == "off" and "made before the computation" in late.message
+    assert check("07.2", ("a", 160.0)).status == "off"
+    forget()
+    assert check("07.2", ("c", 160.0)).status == "correct"
+    forget()
+
+
+def test_predict_refuses_an_exercise_that_is_not_a_prediction() -> None:
+    from eulerlib_course.exercises import predict
+
+    with pytest.raises(ValueError, match="not a prediction"):
+        predict("05.1", [1, 2, 3])

@@ -42,7 +42,7 @@ from eulerlib_course.nbgrader_edition import (
     nbgrader_edition,
     write_nbgrader_edition,
 )
-from eulerlib_course.student import student_copy
+from eulerlib_course.student import name_cell_source, student_copy
 
 REPO = Path(__file__).resolve().parents[2]
 COURSE = REPO / "notebooks"
@@ -242,9 +242,15 @@ def test_each_exercise_becomes_an_answer_cell_and_a_hidden_test(small_course: Pa
     locked = [c for c in notebook.cells if grading(c)["locked"] and not grading(c)["grade"]]
     assert [c.source for c in locked] == [c.source for c in kept]
     assert all(grading(c)["solution"] is False for c in locked)
-    answers = [c for c in notebook.cells if grading(c)["solution"]]
+    answers = [c for c in notebook.cells if grading(c)["grade_id"].startswith("answer-")]
     tests = [c for c in notebook.cells if grading(c)["grade"]]
-    assert len(notebook.cells) == len(kept) + len(answers) + len(tests)
+    # the name cell follows the cell that imports from eulerlib_course, as in a student copy
+    (name,) = [c for c in notebook.cells if grading(c)["grade_id"] == "student-name"]
+    assert grading(name)["solution"] and not grading(name)["locked"]
+    assert name.source == f"{name_cell_source(None)}\n### BEGIN SOLUTION\n### END SOLUTION"
+    before = notebook.cells[notebook.cells.index(name) - 1]
+    assert "from eulerlib_course import" in before.source
+    assert len(notebook.cells) == len(kept) + len(answers) + len(tests) + 1
     assert [grading(c)["grade_id"] for c in answers] == [
         "answer-05-1",
         "answer-05-2",
@@ -479,9 +485,18 @@ def row(exercise: Exercise, status: str, index: int) -> tuple[str, str, str]:
 
 
 def answer(exercise: Exercise, verdict: str, index: int) -> tuple[str | None, str, str]:
-    """An answer with that verdict: a row of the test table, or None (the untouched ``...``)."""
+    """An answer with that verdict: a row of the test table, or None (the untouched ``...``).
+
+    An exercise with data of each student's own is graded on the submitting student's data,
+    where the rows of the test table (written for the teacher's data) need not hold; it gets
+    an answer in the wrong form as its mistake, and its worked solution as its right answer
+    (see :func:`grade_course`)."""
     if verdict == "not yet":
         return None, "not yet", NOT_YET
+    if exercise.per_student is not None and verdict == "off":
+        return f"answer_{exercise.id[-1]} = 'three numbers'", "off", "is text"
+    if exercise.per_student is not None:
+        return "", "correct", ""  # filled in with the worked solution
     return row(exercise, verdict, index)
 
 
@@ -508,11 +523,15 @@ def nbgrader(course: Path, *args: str) -> None:
     assert result.returncode == 0, f"nbgrader {' '.join(args)} failed:\n{result.stderr[-4000:]}"
 
 
-def grade_course(source: Path, course: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def grade_course(
+    source: Path, course: Path, capsys: pytest.CaptureFixture[str], *, graded: bool = False
+) -> None:
     """Write the edition of ``source``, let nbgrader generate, autograde and export it, and check
-    the exported grades and the diagnoses in the graded notebooks."""
+    the exported grades and the diagnoses in the graded notebooks. Two students hand in, with
+    different ids, so each is graded on their own data where an exercise has some."""
+    mode = ["--graded"] if graded else []
     status, _, err = run_cli(
-        capsys, "notebooks", "nbgrader", "--src", str(source), "--out", str(course)
+        capsys, "notebooks", "nbgrader", "--src", str(source), "--out", str(course), *mode
     )
     assert status == 0, err
     nbgrader(course, "generate_assignment", "*")
@@ -536,6 +555,13 @@ def grade_course(source: Path, course: Path, capsys: pytest.CaptureFixture[str])
                 assert text not in visible, f"{path.name}: the release gives away {text!r}"
         copy_sources = [c.source for c in student_copy(read(path)).cells]
         released = [c.source.removesuffix(f"\n{CODE_STUB}") for c in release.cells]
+        if graded:  # the visible checks check the form only, and the key is nowhere
+            forms = [i for i, c in enumerate(released) if "check_form(" in c]
+            assert len(forms) == len(keys), f"{path.name}: {len(forms)} form checks"
+            assert all(CHECK.fullmatch(copy_sources[i].strip()) for i in forms), path.name
+            released = [c for i, c in enumerate(released) if i not in forms]
+            copy_sources = [c for i, c in enumerate(copy_sources) if i not in forms]
+            assert "_KEY_SOURCE" not in visible and "_answer_key" not in visible
         assert released == copy_sources, f"{path.name}: the release is not the student copy"
 
         # Two students: one hands in the worked solutions; the other typical answers, in turn
@@ -549,6 +575,10 @@ def grade_course(source: Path, course: Path, capsys: pytest.CaptureFixture[str])
             },
             "typical": {k.id: answer(k, typical[(n + number) % 4], n) for n, k in enumerate(keys)},
         }
+        for k, (_, solution) in zip(keys, solved, strict=True):
+            code, verdict, says = plans["typical"][k.id]
+            if code == "":
+                plans["typical"][k.id] = (solution.strip(), verdict, says)
         for student, plan in plans.items():
             folder = course / "submitted" / student / assignment
             shutil.copytree(course / "release" / assignment, folder)
@@ -601,6 +631,13 @@ def test_nbgrader_generates_autogrades_and_exports_the_small_course(
     small_course: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     grade_course(small_course, tmp_path / "grading", capsys)
+
+
+@needs_nbgrader_run
+def test_nbgrader_grades_the_small_course_in_graded_mode(
+    small_course: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    grade_course(small_course, tmp_path / "grading", capsys, graded=True)
 
 
 def course_not_in_exercise_form() -> str | None:

@@ -23,6 +23,8 @@ from .judges import (
     QuaternionJudge,
 )
 from .key import Example, Exercise, check, exercises, given
+from .predictions import predict, settle
+from .seeds import student_name
 
 __all__ = [
     "AnglesJudge",
@@ -39,4 +41,7 @@ __all__ = [
     "check",
     "exercises",
     "given",
+    "predict",
+    "settle",
+    "student_name",
 ]

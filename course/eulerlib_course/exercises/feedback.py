@@ -10,9 +10,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Literal
 
-Status = Literal["correct", "off", "not yet"]
+Status = Literal["correct", "off", "not yet", "received"]
 
-NOT_YET = "replace the ... with your answer and run the cell again"
+NOT_YET = "there is no answer yet; replace the ... with your answer and run the cell again"
 
 
 @dataclass(frozen=True)
@@ -23,8 +23,9 @@ class Feedback:
     ----------
     exercise : str
         The exercise, for example ``"05.2"`` (notebook 05, exercise 2).
-    status : {'correct', 'off', 'not yet'}
-        ``'not yet'`` while the answer is still ``...``.
+    status : {'correct', 'off', 'not yet', 'received'}
+        ``'not yet'`` while the answer is still ``...``; ``'received'`` when graded mode's
+        visible check found the form right (it does not judge the answer).
     message : str
         What is right, or what is off and the likely reason, in a sentence or two.
 
@@ -42,8 +43,8 @@ class Feedback:
 
     @property
     def passed(self) -> bool | None:
-        """True when correct, False when off, None when not attempted."""
-        return None if self.status == "not yet" else self.status == "correct"
+        """True when correct, False when off, None when not attempted or not judged."""
+        return None if self.status in ("not yet", "received") else self.status == "correct"
 
     def __bool__(self) -> bool:
         return self.status == "correct"

@@ -28,6 +28,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib import ROTATION_ATOL
 from eulerlib._validation import check_tolerance
 
 from .feedback import Verdict, correct, off
@@ -62,11 +63,37 @@ def _close(a: NDArray[np.float64], b: NDArray[np.float64], tol: float) -> bool:
     return bool(a.shape == b.shape and np.max(np.abs(a - b), initial=0.0) <= tol)
 
 
-def _entries_that_differ(diff: NDArray[np.float64], tol: float) -> str:
-    bad = [tuple(int(i) for i in index) for index in np.argwhere(np.abs(diff) > tol)]
-    shown = ", ".join(str(index) for index in bad[:3])
-    more = f" and {len(bad) - 3} more" if len(bad) > 3 else ""
-    return f"entr{'y' if len(bad) == 1 else 'ies'} {shown}{more}"
+def rounded_to(decimals: int) -> float:
+    """The tolerance of an answer worked by hand and rounded to ``decimals`` decimals.
+
+    One unit of the last decimal asked: half of it for the rounding of the answer, the rest for
+    the rounding of the steps before it.
+
+    Examples
+    --------
+    >>> rounded_to(3)
+    0.001
+    """
+    return float(10.0**-decimals)
+
+
+#: Degrees of the coarse band of a wrong set of angles or a wrong quaternion that is "close".
+CLOSE_DEGREES = 1.0
+#: The coarse band of a wrong number or array entry that is "close", relative to its size.
+CLOSE_RELATIVE = 0.01
+
+_CLOSE = "close, but not within the tolerance: check your rounding, or give more digits"
+_GENERIC_HINT = "work it through again from the data the question gives"
+
+
+def _are(what: str) -> str:
+    """``is`` or ``are``, as ``what`` asks ("your coordinates are", "your axis is")."""
+    plural = "," in what or (what.endswith("s") and not what.endswith(("is", "ss", "us")))
+    return "are" if plural else "is"
+
+
+def _not_it(what: str, hint: str) -> str:
+    return f"{what} {_are(what)} not it; {hint or _GENERIC_HINT}"
 
 
 class Judge:
@@ -90,10 +117,11 @@ class NumberJudge(Judge):
 
     reference: float
     what: str = "your number"
-    tol: float = 1e-9
+    tol: float = ROTATION_ATOL
     unit: str | None = None  # "deg" or "rad"
     modulo: float | None = None
     mistakes: Sequence[Mistake] = ()
+    hint: str = ""
     kind = "number"
 
     def __post_init__(self) -> None:
@@ -110,7 +138,7 @@ class NumberJudge(Judge):
     def judge(self, answer: object) -> Verdict:
         value = float(read_numbers(answer, (), self.what))
         if self._distance(value, self.reference) <= self.tol:
-            return correct(f"{self.what} is right ({value:.10g})")
+            return correct(f"{self.what} {_are(self.what)} right ({value:.10g})")
         for mistake in self.mistakes:
             if self._distance(value, float(mistake.value)) <= self.tol:
                 return off(mistake.message)
@@ -130,8 +158,19 @@ class NumberJudge(Judge):
                 return off(f"{self.what} looks like {said}; the question asks for {asked}")
         if self.reference != 0 and self._distance(-value, self.reference) <= self.tol:
             return off(f"{self.what} has the right size but the wrong sign")
-        side = "large" if value > self.reference else "small"
-        return off(f"{self.what} ({value:.6g}) is not it: it is too {side}")
+        if self._distance(value, self.reference) <= self._band():
+            return off(f"{self.what} {_are(self.what)} {_CLOSE}")
+        return off(_not_it(self.what, self.hint))
+
+    def _band(self) -> float:
+        """The coarse band of "close" (a degree, or a hundredth of the size)."""
+        if self.unit == "deg":
+            band = CLOSE_DEGREES
+        elif self.unit == "rad":
+            band = math.radians(CLOSE_DEGREES)
+        else:
+            band = CLOSE_RELATIVE * max(abs(self.reference), 1.0)
+        return max(band, 10 * self.tol)
 
 
 # --- arrays: vectors and matrices ---------------------------------------------------------------
@@ -149,9 +188,10 @@ class ArrayJudge(Judge):
 
     reference: ArrayLike
     what: str = "your answer"
-    tol: float = 1e-9
+    tol: float = ROTATION_ATOL
     rotation: bool = False
     mistakes: Sequence[Mistake] = ()
+    hint: str = ""
     kind = "array"
 
     def __post_init__(self) -> None:
@@ -165,7 +205,7 @@ class ArrayJudge(Judge):
         ref = self._reference
         value = read_numbers(answer, ref.shape, self.what)
         if _close(value, ref, self.tol):
-            return correct(f"{self.what} is right")
+            return correct(f"{self.what} {_are(self.what)} right")
         for mistake in self.mistakes:
             if _close(value, np.asarray(mistake.value, dtype=np.float64), self.tol):
                 return off(mistake.message)
@@ -187,8 +227,8 @@ class ArrayJudge(Judge):
             )
         ):
             return off(
-                f"{self.what} has length {np.linalg.norm(value):.6g}, but the answer has length "
-                f"{np.linalg.norm(ref):.6g}: a rotation never changes a length"
+                f"{self.what} has another length than the point it comes from: a rotation never "
+                "changes a length"
             )
         if self.rotation and ref.shape == (3, 3):
             det = float(np.linalg.det(value))
@@ -203,7 +243,10 @@ class ArrayJudge(Judge):
                     f"{self.what} is not a rotation: its columns are not orthonormal "
                     f"(max |R Rᵀ − I| = {gram:.3g}); check each entry"
                 )
-        return off(f"{self.what} is not it: {_entries_that_differ(value - ref, self.tol)} differ")
+        band = CLOSE_RELATIVE * max(float(np.max(np.abs(ref), initial=0.0)), 1.0)
+        if _close(value, ref, max(band, 10 * self.tol)):
+            return off(f"{self.what} {_are(self.what)} {_CLOSE}")
+        return off(_not_it(self.what, self.hint))
 
 
 # --- angles --------------------------------------------------------------------------------------
@@ -226,9 +269,10 @@ class AnglesJudge(Judge):
     seq: str
     degrees: bool = True
     what: str = "your angles"
-    tol: float = 1e-9
+    tol: float = ROTATION_ATOL
     constraints: Sequence[Constraint] = ()
     mistakes: Sequence[Mistake] = ()
+    hint: str = ""
     kind = "angles"
 
     def __post_init__(self) -> None:
@@ -302,8 +346,8 @@ class AnglesJudge(Judge):
                     turned,
                     seq,
                     self.degrees,
-                    f"{name} is off by {'180°' if self.degrees else 'π'}: atan(y/x) cannot tell "
-                    "(x, y) from (−x, −y); use atan2(y, x), which keeps the quadrant",
+                    f"{name} is off by {'180°' if self.degrees else 'π'}, half a turn: check the "
+                    "quadrant of that angle",
                 )
             )
         for angles, candidate_seq, degrees, message in candidates:
@@ -311,11 +355,9 @@ class AnglesJudge(Judge):
                 return off(message)
         from eulerlib import angle_between
 
-        gap = float(angle_between(got, target, degrees=True))
-        return off(
-            f"these angles give another rotation, {gap:.3g}° away from the one asked for (the "
-            "angle of the turn that takes one attitude to the other)"
-        )
+        if float(angle_between(got, target, degrees=True)) <= CLOSE_DEGREES:
+            return off(f"these angles are {_CLOSE}")
+        return off(f"these angles give another rotation; {self.hint or _GENERIC_HINT}")
 
 
 # --- quaternions ----------------------------------------------------------------------------------
@@ -333,8 +375,9 @@ class QuaternionJudge(Judge):
     reference: ArrayLike
     scalar_first: bool = False
     what: str = "your quaternion"
-    tol: float = 1e-9
+    tol: float = ROTATION_ATOL
     mistakes: Sequence[Mistake] = ()
+    hint: str = ""
     kind = "quaternion"
 
     def __post_init__(self) -> None:
@@ -362,8 +405,8 @@ class QuaternionJudge(Judge):
             and self._same(value / norm, ref)
         ):
             return off(
-                f"{self.what} points the right way but has length {norm:.6g}; divide it by "
-                "its norm to make it a unit quaternion"
+                f"{self.what} points the right way but is not of length 1; divide it by its "
+                "norm to make it a unit quaternion"
             )
         moved = np.roll(value, 1 if self.scalar_first else -1)
         if self._same(moved, ref):
@@ -379,8 +422,9 @@ class QuaternionJudge(Judge):
         if norm == 0:
             return off(f"{self.what} is zero, which is no rotation at all")
         dot = abs(float(value @ ref)) / norm
-        angle = 2 * math.degrees(math.acos(min(1.0, dot)))
-        return off(f"{self.what} is another rotation, {angle:.3g}° away from the one asked for")
+        if 2 * math.degrees(math.acos(min(1.0, dot))) <= CLOSE_DEGREES:
+            return off(f"{self.what} {_are(self.what)} {_CLOSE}")
+        return off(f"{self.what} is another rotation; {self.hint or _GENERIC_HINT}")
 
 
 # --- SymPy expressions and matrices --------------------------------------------------------------
@@ -428,6 +472,22 @@ def _vanishes(expression: Any, seed: int = 7) -> bool:
     return bool(np.all(np.isfinite(values)) and np.max(np.abs(values)) <= 1e-9)
 
 
+def _same_symbols(value: Any, reference: Any) -> Any:
+    """``value`` with each symbol replaced by the reference's symbol of the same name.
+
+    ``Symbol("alpha")`` and ``Symbol("alpha", real=True)`` are different symbols to SymPy; a
+    learner who made the notebook's symbols again, with or without assumptions, means the same
+    angle.
+    """
+    by_name = {str(symbol): symbol for symbol in reference.free_symbols}
+    swaps = {
+        symbol: by_name[str(symbol)]
+        for symbol in getattr(value, "free_symbols", set())
+        if str(symbol) in by_name and by_name[str(symbol)] != symbol
+    }
+    return value.xreplace(swaps) if swaps else value
+
+
 @dataclass(frozen=True)
 class ExpressionJudge(Judge):
     """A SymPy expression or matrix, judged by its value, so that any equivalent form passes.
@@ -447,7 +507,7 @@ class ExpressionJudge(Judge):
         import sympy as sp
 
         ref = sp.sympify(self.reference)
-        value = read_expression(answer, self.what)
+        value = _same_symbols(read_expression(answer, self.what), ref)
         is_matrix = isinstance(ref, sp.MatrixBase)
         if is_matrix != isinstance(value, sp.MatrixBase) or (
             is_matrix and value.shape != ref.shape
@@ -484,11 +544,20 @@ class ExpressionJudge(Judge):
 
 @dataclass(frozen=True)
 class ChoiceJudge(Judge):
-    """One option among several (at least three), each wrong option with its own explanation."""
+    """One option among several (at least three), and the computation that settles it.
+
+    Each wrong option has its own explanation, which says why that option fails and never names
+    the right one. With ``computed`` (a judge of a number, a vector, a matrix) the answer is a
+    pair, ``(option, value)``: the option the learner predicts and the value they computed to
+    settle it; both must be right, so trying the options one by one passes nothing.
+    ``computed_what`` names the value in the feedback ("the yaw you computed").
+    """
 
     options: Mapping[str, str]
     answer: str
     explanations: Mapping[str, str] = field(default_factory=dict)
+    computed: Judge | None = None
+    computed_what: str = "the value you computed"
     kind = "choice"
 
     def __post_init__(self) -> None:
@@ -500,11 +569,38 @@ class ChoiceJudge(Judge):
         if missing:
             raise ValueError(f"every wrong option needs an explanation; missing {sorted(missing)}")
 
+    def _option(self, answer: object) -> str | None:
+        if isinstance(answer, str) and answer.strip().lower() in self.options:
+            return answer.strip().lower()
+        return None
+
     def judge(self, answer: object) -> Verdict:
         labels = ", ".join(repr(label) for label in self.options)
-        if not isinstance(answer, str) or answer.strip().lower() not in self.options:
-            return off(f"give one of the options {labels} (as text, in quotes)")
-        label = answer.strip().lower()
-        if label == self.answer:
-            return correct(self.explanations.get(label, "that is the one"))
-        return off(self.explanations[label])
+        if self.computed is None:
+            label = self._option(answer)
+            if label is None:
+                return off(f"give one of the options {labels} (as text, in quotes)")
+            if label == self.answer:
+                return correct(self.explanations.get(label, "that is the one"))
+            return off(self.explanations[label])
+        pair = isinstance(answer, (tuple, list)) and len(answer) == 2 and self._option(answer[0])
+        if not pair:
+            return off(
+                f"give a pair: one of the options {labels} (as text, in quotes), then "
+                f"{self.computed_what}, for example ('a', value)"
+            )
+        assert isinstance(answer, (tuple, list))
+        label = self._option(answer[0])
+        if answer[1] is Ellipsis:
+            return Verdict(
+                "not yet",
+                f"your prediction {label!r} is recorded; now compute {self.computed_what} and "
+                "put it in place of the ...",
+            )
+        if label != self.answer:
+            assert label is not None
+            return off(self.explanations[label])
+        settled = self.computed.judge(answer[1])
+        if settled.status != "correct":
+            return off(settled.message)
+        return correct(self.explanations.get(label, "that is the one"))

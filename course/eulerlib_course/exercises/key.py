@@ -14,6 +14,11 @@ trust it:
   through the student copy of the notebook;
 * ``forbidden``: text that would give the answer away, which no visible cell of a student copy may
   contain;
+* ``per_student`` (optional): how to make the question's data from a random generator, and
+  ``judged``: the judge for given data. With them each student gets data of their own
+  (:mod:`.seeds`), judged against the reference computed from that student's data; ``given``
+  and ``judge`` stay the teacher's fixed data and judge, which the worked solutions and the
+  stored outputs use;
 * ``level``: where it stands in the notebook's climb: ``apply`` (use the idea), ``predict`` (say
   what will happen before computing it), ``extend`` (carry the idea to a new case).
 """
@@ -27,9 +32,12 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, Literal
 
+import numpy as np
+
 from .feedback import NOT_YET, Feedback, Status, off
 from .judges import Judge
 from .reading import Unreadable
+from .seeds import current_student, rng_for
 
 Level = Literal["apply", "predict", "extend"]
 _ID = re.compile(r"\d\d\.\d")
@@ -59,12 +67,33 @@ class Exercise:
     examples: tuple[Example, ...]
     given: Callable[[], Any] | None = None
     forbidden: tuple[str, ...] = ()
+    per_student: Callable[[np.random.Generator], Any] | None = None
+    judged: Callable[[Any], Judge] | None = None
+    seed_of: str = ""  # the exercise whose data this one reuses ("" for its own)
 
     def __post_init__(self) -> None:
         if not _ID.fullmatch(self.id):
             raise ValueError(f"an exercise id is 'NN.k' (notebook, number), got {self.id!r}")
         if self.level not in ("apply", "predict", "extend"):
             raise ValueError(f"{self.id}: level must be apply, predict or extend")
+        if (self.per_student is None) != (self.judged is None):
+            raise ValueError(f"{self.id}: per_student and judged go together")
+
+    def data_for(self, name: str | None) -> Any:
+        """The question's data for student ``name`` (None: the teacher's fixed data)."""
+        if name is not None and self.per_student is not None:
+            return self.per_student(rng_for(self.seed_of or self.id, name))
+        if self.given is None:
+            raise ValueError(f"exercise {self.id} gives no data")
+        return self.given()
+
+    def judge_for(self, name: str | None = None) -> Judge:
+        """The judge of student ``name``'s answer (None: the current student, see
+        :func:`.seeds.current_student`; the teacher's judge when nobody is named)."""
+        name = current_student() if name is None else name
+        if self.judged is not None and name is not None:
+            return self.judged(self.data_for(name))
+        return self.judge
 
 
 def _modules() -> list[str]:
@@ -95,10 +124,20 @@ def exercises() -> dict[str, Exercise]:
 def _lookup(exercise: object) -> Exercise:
     if not isinstance(exercise, str):
         raise TypeError(f"exercise must be an id such as '05.2', got {type(exercise).__name__}")
+    if not exercises():
+        raise ValueError(
+            "the answer key is not installed here (graded mode): your answers are checked for "
+            "their form, and graded when you hand them in"
+        )
     key = exercises().get(exercise.strip())
     if key is None:
         raise ValueError(f"there is no exercise {exercise!r} in the course")
     return key
+
+
+def _blank(answer: object) -> bool:
+    """Whether an answer is still blank: the ``...`` of the exercise cell, or empty text."""
+    return answer is Ellipsis or (isinstance(answer, str) and not answer.strip())
 
 
 def check(exercise: str, answer: object) -> Feedback:
@@ -127,13 +166,39 @@ def check(exercise: str, answer: object) -> Feedback:
     Examples
     --------
     >>> check("05.1", ...)
-    Exercise 05.1 — not yet: replace the ... with your answer and run the cell again
+    Exercise 05.1 — not yet: there is no answer yet; replace the ... with your answer and run the
+    cell again
     """
     key = _lookup(exercise)
-    if answer is Ellipsis:
+    if key.level == "predict":
+        from .predictions import record
+
+        counted = record(key.id, answer)
+        if not _blank(answer) and not _same_answer(counted, answer):
+            feedback = check_recorded(key, counted)
+            return Feedback(
+                key.id,
+                feedback.status,
+                f"{feedback.message} (the prediction that counts is the one made before the "
+                "computation)",
+            )
+    return check_recorded(key, answer)
+
+
+def _same_answer(a: object, b: object) -> bool:
+    if a is b:
+        return True
+    if isinstance(a, tuple) and isinstance(b, (tuple, list)) and len(a) == len(b) == 2:
+        return a[0] == b[0] and a[1] is b[1]
+    return False
+
+
+def check_recorded(key: Exercise, answer: object) -> Feedback:
+    """Judge ``answer`` to the exercise ``key`` (no prediction is recorded)."""
+    if _blank(answer):
         return Feedback(key.id, "not yet", NOT_YET)
     try:
-        verdict = key.judge.judge(answer)
+        verdict = key.judge_for().judge(answer)
     except Unreadable as reason:
         verdict = off(str(reason))
     return Feedback(key.id, verdict.status, verdict.message)
@@ -142,6 +207,9 @@ def check(exercise: str, answer: object) -> Feedback:
 def given(exercise: str) -> Any:
     """The data an exercise's question gives (a fresh copy each call).
 
+    The current student's own data when the exercise makes data per student (see
+    :mod:`.seeds`), otherwise the teacher's.
+
     Examples
     --------
     >>> R = given("05.1")
@@ -149,6 +217,4 @@ def given(exercise: str) -> Any:
     (3, 3)
     """
     key = _lookup(exercise)
-    if key.given is None:
-        raise ValueError(f"exercise {key.id} gives no data")
-    return key.given()
+    return key.data_for(current_student())

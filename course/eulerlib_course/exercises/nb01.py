@@ -9,7 +9,7 @@ from numpy.typing import NDArray
 
 from eulerlib import elementary_rotation, euler_to_matrix
 
-from .judges import ArrayJudge, Mistake
+from .judges import ArrayJudge, Mistake, rounded_to
 from .key import Example, Exercise
 
 # 01.1: a turn by -90° about x, typed in from where the basis vectors go (x stays, y → -z, z → y)
@@ -29,6 +29,34 @@ _POINT = [2.0, -1.0, 0.5]  # as the exercise cell writes it
 
 def _frame() -> NDArray[np.float64]:
     return euler_to_matrix(_FRAME_ANGLES, "ZYX", degrees=True)
+
+
+def _some_frame(rng: np.random.Generator) -> NDArray[np.float64]:
+    """A student's turned frame: yaw, pitch, roll in whole degrees, away from lock."""
+    yaw, roll = (float(a) for a in rng.integers(-170, 171, 2))
+    pitch = float(rng.integers(-60, 61))
+    return euler_to_matrix([yaw, pitch, roll], "ZYX", degrees=True)
+
+
+def _judge_frame(frame: NDArray[np.float64]) -> ArrayJudge:
+    return ArrayJudge(
+        frame.T @ np.array(_POINT),
+        what="your coordinates",
+        tol=1e-9,
+        mistakes=(
+            Mistake(
+                frame @ np.array(_POINT),
+                "this is the point turned by F_ex (the active reading, F p); the point stays "
+                "where it is and the axes are turned, so its coordinates are its components "
+                "along the columns of F_ex",
+            ),
+            Mistake(
+                _POINT,
+                "these are the coordinates in the fixed frame, where the point was given; "
+                "along the turned axes they are other numbers",
+            ),
+        ),
+    )
 
 
 EXERCISES = [
@@ -67,6 +95,7 @@ EXERCISES = [
         judge=ArrayJudge(
             _E_Z_TURNED,
             what="your image of e_z",
+            tol=rounded_to(3),
             mistakes=(
                 Mistake(
                     [-0.5, 0.0, _HALF_ROOT_3],
@@ -95,6 +124,7 @@ EXERCISES = [
                 "sine and cosine are swapped",
             ),
             Example("[0.5, 0.866]", "off", "shape (2,)"),
+            Example("[0.5, 0, 0.87]", "off", "close"),
         ),
         forbidden=("rot_y(30", "0.866", "0.5, 0"),
     ),
@@ -105,6 +135,7 @@ EXERCISES = [
             _THIRD_TURN_ABOUT_DIAGONAL,
             what="your matrix",
             rotation=True,
+            hint="its columns are the images of e_x, e_y and e_z: find where the turn takes each",
             mistakes=(
                 Mistake(
                     np.transpose(_THIRD_TURN_ABOUT_DIAGONAL),
@@ -119,31 +150,16 @@ EXERCISES = [
             Example("np.roll(np.eye(3), 1, axis=0)", "correct"),
             Example("np.array([[0, 1, 0], [0, 0, 1], [1, 0, 0]])", "off", "sends e_x to e_z"),
             Example("np.array([[0, 1, 0], [1, 0, 0], [0, 0, 1]])", "off", "reflection"),
-            Example("np.eye(3)", "off", "differ"),
+            Example("np.eye(3)", "off", "columns are the images"),
         ),
         forbidden=("[[0, 0, 1], [1, 0, 0], [0, 1, 0]]", "[e2, e3, e1]"),
     ),
     Exercise(
         id="01.4",
         level="extend",
-        judge=ArrayJudge(
-            _frame().T @ np.array(_POINT),
-            what="your coordinates",
-            tol=1e-9,
-            mistakes=(
-                Mistake(
-                    _frame() @ np.array(_POINT),
-                    "this is the point turned by F_ex (the active reading, F p); the point stays "
-                    "where it is and the axes are turned, so its coordinates are its components "
-                    "along the columns of F_ex",
-                ),
-                Mistake(
-                    _POINT,
-                    "these are the coordinates in the fixed frame, where the point was given; "
-                    "along the turned axes they are other numbers",
-                ),
-            ),
-        ),
+        judge=_judge_frame(_frame()),
+        per_student=_some_frame,
+        judged=_judge_frame,
         given=_frame,
         examples=(
             Example("F_ex.T @ p_ex", "correct"),

@@ -6,7 +6,11 @@ from collections.abc import Callable
 from functools import cached_property
 from typing import Any
 
-from .judges import ChoiceJudge, ExpressionJudge, Mistake
+import numpy as np
+
+from eulerlib import euler_to_matrix
+
+from .judges import ArrayJudge, ChoiceJudge, ExpressionJudge, Mistake, rounded_to
 from .key import Example, Exercise
 
 
@@ -61,6 +65,8 @@ _ZXZ = _product(("z", "alpha"), ("x", "beta"), ("z", "gamma"))
 # 03.3: Rose's numbers read about the fixed axes, "zyx": R_x(u) R_y(v) R_z(w); the nose is column 1
 _ZYX_FIXED = _product(("x", "u"), ("y", "v"), ("z", "w"))
 
+_WVU = (30.0, -20.0, 50.0)  # 03.2: yaw w, pitch v, roll u of the matrix asked for, degrees
+
 EXERCISES = [
     Exercise(
         id="03.1",
@@ -107,6 +113,14 @@ EXERCISES = [
                 "d": 'Rotation.from_euler("ZYX", [u, v, w])',
             },
             answer="b",
+            computed=ArrayJudge(
+                euler_to_matrix(np.array(_WVU), "ZYX", degrees=True),
+                what="your matrix",
+                tol=rounded_to(3),
+                rotation=True,
+                hint="make the matrix of the call you chose for w, v, u = 30°, −20°, 50°",
+            ),
+            computed_what="the matrix of your call",
             explanations={
                 "b": "right: x, then y, then z about the fixed axes is R_z(w) R_y(v) R_x(u), "
                 "Rose's product read from the right",
@@ -119,12 +133,24 @@ EXERCISES = [
             },
         ),
         examples=(
-            Example("'b'", "correct"),
-            Example("' B '", "correct", "read from the right"),
-            Example("'a'", "off", "reverse order"),
-            Example("'c'", "off", "fixed axes z, then y, then x"),
-            Example("'d'", "off", "angle i goes with letter i"),
-            Example("2", "off", "give one of the options"),
+            Example(
+                "('b', Rotation.from_euler('xyz', [50, -20, 30], degrees=True).as_matrix())",
+                "correct",
+            ),
+            Example(
+                "(' B ', Rotation.from_euler('ZYX', [30, -20, 50], degrees=True).as_matrix())",
+                "correct",
+                "read from the right",
+            ),
+            Example(
+                "('b', Rotation.from_euler('XYZ', [50, -20, 30], degrees=True).as_matrix())",
+                "off",
+                "your matrix is not it",
+            ),
+            Example("('a', np.eye(3))", "off", "reverse order"),
+            Example("('c', np.eye(3))", "off", "fixed axes z, then y, then x"),
+            Example("('d', np.eye(3))", "off", "angle i goes with letter i"),
+            Example("'b'", "off", "give a pair"),
         ),
         forbidden=('answer_2 = "b"', "answer_2 = 'b'"),
     ),

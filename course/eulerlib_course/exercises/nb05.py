@@ -7,7 +7,10 @@ turns give the same rotation and pass, unless the question says otherwise.
 
 from __future__ import annotations
 
-from eulerlib import euler_to_matrix
+import numpy as np
+from numpy.typing import NDArray
+
+from eulerlib import euler_to_matrix, matrix_to_euler
 
 from .judges import AnglesJudge, Constraint, Mistake
 from .key import Example, Exercise
@@ -23,22 +26,112 @@ def _wrapped(angle: float) -> float:
 
 _ATAN = "atan(y/x) cannot tell (x, y) from (−x, −y); use atan2(y, x), which keeps the quadrant"
 
+
+def _some_angle(rng: np.random.Generator, low: int, high: int, away_from: tuple[int, ...]) -> float:
+    """A whole number of degrees in [low, high], at least 15° from each angle of ``away_from``."""
+    while True:
+        angle = int(rng.integers(low, high + 1))
+        if all(abs(angle - a) >= 15 for a in away_from):
+            return float(angle)
+
+
+def _some_ypr(rng: np.random.Generator) -> list[float]:
+    """A student's yaw, pitch, roll: outer angles away from 0° and ±180°, pitch from lock."""
+    return [
+        _some_angle(rng, -165, 165, (0,)),
+        _some_angle(rng, -75, 75, (0,)),
+        _some_angle(rng, -165, 165, (0,)),
+    ]
+
+
+def _matrix_of_some_ypr(rng: np.random.Generator) -> NDArray[np.float64]:
+    return euler_to_matrix(_some_ypr(rng), "rose", degrees=True)
+
+
+def _matrix_of_some_xyz(rng: np.random.Generator) -> NDArray[np.float64]:
+    return euler_to_matrix(_some_ypr(rng), "XYZ", degrees=True)
+
+
+def _judge_1(ypr: list[float]) -> AnglesJudge:
+    return AnglesJudge(
+        ypr,
+        "rose",
+        degrees=True,
+        what="your yaw, pitch, roll",
+        mistakes=(
+            Mistake(
+                [_wrapped(ypr[0] + 180), ypr[1], _wrapped(ypr[2] + 180)],
+                f"yaw and roll are both off by 180°: {_ATAN}",
+            ),
+        ),
+    )
+
+
+def _judge_2(ypr: list[float]) -> AnglesJudge:
+    return AnglesJudge(
+        [_wrapped(ypr[0] + 180), 180 - ypr[1], _wrapped(ypr[2] + 180)],
+        "rose",
+        degrees=True,
+        what="your second triple",
+        mistakes=(
+            Mistake(
+                [_wrapped(ypr[0] + 180), 180 - ypr[1], ypr[2]],
+                "the second triple turns both outer angles by 180°: yaw and roll",
+            ),
+            Mistake(
+                [ypr[0], 180 - ypr[1], _wrapped(ypr[2] + 180)],
+                "the second triple turns both outer angles by 180°: yaw and roll",
+            ),
+            Mistake(
+                [ypr[0], 180 - ypr[1], ypr[2]],
+                "180° − pitch alone flips the common factor cos(pitch); yaw and roll must "
+                "each turn by 180° to flip it back",
+            ),
+        ),
+        constraints=(
+            Constraint(
+                lambda a: abs(_wrapped(float(a[1]))) > 90.0 + 1e-9,
+                "the question asks for the other triple, the one with pitch outside [-90°, 90°]",
+            ),
+        ),
+    )
+
+
+def _judge_3(xyz: list[float]) -> AnglesJudge:
+    return AnglesJudge(
+        xyz,
+        "XYZ",
+        degrees=True,
+        what="your angles for 'XYZ'",
+        mistakes=(
+            Mistake(
+                [-xyz[0], xyz[1], -xyz[2]],
+                "α and γ both have the wrong sign: the sine entries of 'XYZ' carry a minus "
+                "sign (X[1, 2] = −sin α cos β, X[0, 1] = −sin γ cos β)",
+            ),
+        ),
+    )
+
+
+def _judge_1_of_matrix(R: NDArray[np.float64]) -> AnglesJudge:
+    return _judge_1(list(matrix_to_euler(R, "rose", degrees=True)))
+
+
+def _judge_2_of_matrix(R: NDArray[np.float64]) -> AnglesJudge:
+    return _judge_2(list(matrix_to_euler(R, "rose", degrees=True)))
+
+
+def _judge_3_of_matrix(M: NDArray[np.float64]) -> AnglesJudge:
+    return _judge_3(list(matrix_to_euler(M, "XYZ", degrees=True)))
+
+
 EXERCISES = [
     Exercise(
         id="05.1",
         level="apply",
-        judge=AnglesJudge(
-            _YPR,
-            "rose",
-            degrees=True,
-            what="your yaw, pitch, roll",
-            mistakes=(
-                Mistake(
-                    [_wrapped(_YPR[0] + 180), _YPR[1], _wrapped(_YPR[2] + 180)],
-                    f"yaw and roll are both off by 180°: {_ATAN}",
-                ),
-            ),
-        ),
+        judge=_judge_1(_YPR),
+        per_student=_matrix_of_some_ypr,
+        judged=_judge_1_of_matrix,
         given=lambda: euler_to_matrix(_YPR, "rose", degrees=True),
         examples=(
             Example(
@@ -80,34 +173,10 @@ EXERCISES = [
     Exercise(
         id="05.2",
         level="predict",
-        judge=AnglesJudge(
-            [_wrapped(_YPR[0] + 180), 180 - _YPR[1], _wrapped(_YPR[2] + 180)],
-            "rose",
-            degrees=True,
-            what="your second triple",
-            mistakes=(
-                Mistake(
-                    [_wrapped(_YPR[0] + 180), 180 - _YPR[1], _YPR[2]],
-                    "the second triple turns both outer angles by 180°: yaw and roll",
-                ),
-                Mistake(
-                    [_YPR[0], 180 - _YPR[1], _wrapped(_YPR[2] + 180)],
-                    "the second triple turns both outer angles by 180°: yaw and roll",
-                ),
-                Mistake(
-                    [_YPR[0], 180 - _YPR[1], _YPR[2]],
-                    "180° − pitch alone flips the common factor cos(pitch); yaw and roll must "
-                    "each turn by 180° to flip it back",
-                ),
-            ),
-            constraints=(
-                Constraint(
-                    lambda a: abs(_wrapped(float(a[1]))) > 90.0 + 1e-9,
-                    "the question asks for the other triple, the one with pitch outside "
-                    "[-90°, 90°]",
-                ),
-            ),
-        ),
+        judge=_judge_2(_YPR),
+        per_student=_matrix_of_some_ypr,
+        judged=_judge_2_of_matrix,
+        seed_of="05.1",
         examples=(
             Example("[80, 145, -20]", "correct"),
             Example("[80, 145, 340]", "correct"),
@@ -123,19 +192,9 @@ EXERCISES = [
     Exercise(
         id="05.3",
         level="extend",
-        judge=AnglesJudge(
-            _XYZ,
-            "XYZ",
-            degrees=True,
-            what="your angles for 'XYZ'",
-            mistakes=(
-                Mistake(
-                    [-_XYZ[0], _XYZ[1], -_XYZ[2]],
-                    "α and γ both have the wrong sign: the sine entries of 'XYZ' carry a minus "
-                    "sign (X[1, 2] = −sin α cos β, X[0, 1] = −sin γ cos β)",
-                ),
-            ),
-        ),
+        judge=_judge_3(_XYZ),
+        per_student=_matrix_of_some_xyz,
+        judged=_judge_3_of_matrix,
         given=lambda: euler_to_matrix(_XYZ, "XYZ", degrees=True),
         examples=(
             Example(

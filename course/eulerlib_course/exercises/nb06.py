@@ -40,8 +40,8 @@ class _Symbolic:
 
 
 _DIFFERENCE = (
-    "a difference would mean the two turns oppose each other; at β = +90° the turn R_y(β) "
-    "lays the third axis z onto +x, the direction of the first axis, so the turns add"
+    "a difference would mean the two turns oppose each other; work out where the turn "
+    "R_y(+90°) lays the third axis z, and compare its direction with the first axis"
 )
 
 
@@ -114,8 +114,8 @@ EXERCISES = [
         examples=(
             Example("gamma + alpha", "correct"),
             Example("-(alpha + gamma)", "correct", "other sign"),
-            Example("alpha - gamma", "off", "turns add"),
-            Example("gamma - alpha", "off", "turns add"),
+            Example("alpha - gamma", "off", "oppose each other"),
+            Example("gamma - alpha", "off", "oppose each other"),
             Example(
                 "sp.trigsimp(euler_matrix((alpha, sp.pi / 2, gamma), 'XYZ'))",
                 "off",
@@ -173,7 +173,7 @@ EXERCISES = [
                 "length 1",
             ),
             Example("[1, 0, 0]", "off", "only together"),
-            Example("[1, 1, -1]", "off", "entry (1,)"),
+            Example("[1, 1, -1]", "off", "are not it"),
         ),
         forbidden=("[1, 0, -1]", "1.0, 0.0, -1.0"),
     ),

@@ -2,13 +2,35 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
-from .judges import AnglesJudge, ChoiceJudge, Constraint, Mistake
+from eulerlib import euler_to_matrix, matrix_to_euler, rot_y
+
+from .judges import AnglesJudge, ChoiceJudge, Constraint, Mistake, NumberJudge, rounded_to
 from .key import Example, Exercise
 
 _LOCKED = (25.0, 90.0, 70.0)  # yaw, pitch, roll of the aircraft of 07.1, degrees
 _ZXZ = (30.0, 180.0, 10.0)  # z, x', z'' of the matrix of 07.3, degrees
+# 07.2: the locked attitude of section 4 nudged by 1e-9 rad about the world +y axis
+_NUDGED = rot_y(1e-9) @ euler_to_matrix([0.0, 90.0, -20.0], "ZYX", degrees=True)
+_NUDGED_ROLL = float(matrix_to_euler(_NUDGED, "ZYX", degrees=True)[2])
+
+
+def _some_locked(rng: np.random.Generator) -> Any:
+    """A student's yaw, pitch, roll at pitch +90°: yaw and roll whole degrees, their sum and
+    difference at least 10° from 0° (so that the two mistakes differ from the answer)."""
+    while True:
+        yaw, roll = (float(a) for a in rng.integers(-80, 81, 2))
+        if min(abs(roll - yaw), abs(roll + yaw), abs(yaw), abs(2 * yaw)) >= 10:
+            return np.array([yaw, 90.0, roll])
+
+
+def _some_zxz(rng: np.random.Generator) -> Any:
+    """A student's z, x', z'' at x' = 180°, picked like :func:`_some_locked`'s yaw and roll."""
+    z, _, z2 = _some_locked(rng)
+    return np.array([z, 180.0, z2])
 
 
 def _is_zero_degrees(angle: float) -> bool:
@@ -16,34 +38,69 @@ def _is_zero_degrees(angle: float) -> bool:
     return abs((angle + 180.0) % 360.0 - 180.0) <= 1e-9
 
 
+def _judge_locked(ypr: Any) -> AnglesJudge:
+    return AnglesJudge(
+        ypr,
+        "rose",
+        degrees=True,
+        what="your yaw, pitch, roll",
+        constraints=(
+            Constraint(
+                lambda a: _is_zero_degrees(float(a[0])),
+                "the question asks for the triple with yaw = 0°",
+            ),
+        ),
+        mistakes=(
+            Mistake(
+                [0.0, 90.0, ypr[2] + ypr[0]],
+                "you added yaw and roll: the sum is what survives at pitch −90°; at pitch +90° "
+                "write out where R_y(90°) lays the roll axis, and which way the two outer turns "
+                "then go about it",
+            ),
+            Mistake(
+                [0.0, 90.0, ypr[0] - ypr[2]],
+                "you took yaw − roll: the combination is right up to its sign; check the sign "
+                "each outer angle carries in the locked matrix",
+            ),
+        ),
+    )
+
+
+def _judge_zxz(zxz: Any) -> AnglesJudge:
+    return AnglesJudge(
+        zxz,
+        "ZXZ",
+        degrees=True,
+        what="your z, x', z''",
+        constraints=(
+            Constraint(
+                lambda a: _is_zero_degrees(float(a[0])),
+                "the question asks for the triple with the first angle z = 0°",
+            ),
+        ),
+        mistakes=(
+            Mistake(
+                [0.0, 180.0, zxz[2] + zxz[0]],
+                "you added z and z'': that is what survives at x' = 0°; at x' = 180° the "
+                "middle turn points the z axis the other way: work out how the two outer turns "
+                "about z combine then",
+            ),
+            Mistake(
+                [0.0, 180.0, zxz[0] - zxz[2]],
+                "you took z − z'': the combination is right up to its sign; check the sign "
+                "each outer angle carries in the locked matrix",
+            ),
+        ),
+    )
+
+
 EXERCISES = [
     Exercise(
         id="07.1",
         level="apply",
-        judge=AnglesJudge(
-            _LOCKED,
-            "rose",
-            degrees=True,
-            what="your yaw, pitch, roll",
-            constraints=(
-                Constraint(
-                    lambda a: _is_zero_degrees(float(a[0])),
-                    "the question asks for the triple with yaw = 0°",
-                ),
-            ),
-            mistakes=(
-                Mistake(
-                    [0.0, 90.0, _LOCKED[2] + _LOCKED[0]],
-                    "you added yaw and roll: the sum roll + yaw is what survives at pitch −90°; "
-                    "at pitch +90° the matrix keeps roll − yaw",
-                ),
-                Mistake(
-                    [0.0, 90.0, _LOCKED[0] - _LOCKED[2]],
-                    "you took yaw − roll: at pitch +90° the matrix keeps roll − yaw, the other "
-                    "way round",
-                ),
-            ),
-        ),
+        judge=_judge_locked(_LOCKED),
+        per_student=_some_locked,
+        judged=_judge_locked,
         given=lambda: np.array(_LOCKED),
         examples=(
             Example("[0.0, ypr_ex[1], ypr_ex[2] - ypr_ex[0]]", "correct"),
@@ -51,7 +108,7 @@ EXERCISES = [
             Example("[360, 90, 45]", "correct", "rotation asked for"),
             Example("[25, 90, 70]", "off", "yaw = 0°"),
             Example("[-45, 90, 0]", "off", "yaw = 0°"),
-            Example("[0, 90, 95]", "off", "roll + yaw"),
+            Example("[0, 90, 95]", "off", "you added yaw and roll"),
             Example("[0, 90, -45]", "off", "yaw − roll"),
             Example("np.radians([0, 90, 45])", "off", "radians"),
         ),
@@ -68,11 +125,22 @@ EXERCISES = [
                 "d": "the yaw comes out as NaN",
             },
             answer="c",
+            computed=NumberJudge(
+                _NUDGED_ROLL,
+                what="your roll",
+                tol=rounded_to(2),
+                unit="deg",
+                modulo=360.0,
+                hint="read it from matrix_to_euler of the nudged matrix, in degrees; at the "
+                "lock only roll − yaw is pinned down",
+            ),
+            computed_what="the roll that comes with that yaw",
             explanations={
-                "a": "a nudge about −y would leave the yaw near 0°; about +y the nose tips toward "
-                "−x, and the yaw follows the nose's shadow there",
-                "b": "±90° is what the nudges about ±x give, which tip the nose toward ±y; a "
-                "nudge about +y tips it toward −x",
+                "a": "the yaw is the direction of the nose's shadow on the horizontal plane, "
+                "atan2(r21, r11); it stays near 0° only if the nudge tips the nose toward +x: "
+                "work out from column 1 of rot_y(ε) R_lock which way it tips",
+                "b": "±90° would mean the nose tips toward ±y; a turn about the y axis moves the "
+                "nose within the x–z plane and leaves its y component alone",
                 "c": "about +y the nose tips toward −x, and the yaw is the direction of "
                 "the nose's shadow, atan2(r21, r11): 180°",
                 "d": "atan2 of two tiny numbers is a perfectly good angle: the direction in which "
@@ -80,48 +148,30 @@ EXERCISES = [
             },
         ),
         examples=(
-            Example("'c'", "correct", "shadow"),
-            Example("' C '", "correct", "180°"),
-            Example("'a'", "off", "−x"),
-            Example("'b'", "off", "±y"),
-            Example("'d'", "off", "atan2"),
-            Example("180", "off", "as text"),
+            Example("('c', 160.0)", "correct", "shadow"),
+            Example("('c', ...)", "not yet", "recorded"),
+            Example("(' C ', -200.0)", "correct", "180°"),
+            Example("('c', -20.0)", "off", "your roll is not it"),
+            Example("('a', -20.0)", "off", "which way it tips"),
+            Example("('b', 70.0)", "off", "x–z plane"),
+            Example("('d', float('nan'))", "off", "atan2"),
+            Example("'c'", "off", "give a pair"),
+            Example("180", "off", "give a pair"),
         ),
     ),
     Exercise(
         id="07.3",
         level="extend",
-        judge=AnglesJudge(
-            _ZXZ,
-            "ZXZ",
-            degrees=True,
-            what="your z, x', z''",
-            constraints=(
-                Constraint(
-                    lambda a: _is_zero_degrees(float(a[0])),
-                    "the question asks for the triple with the first angle z = 0°",
-                ),
-            ),
-            mistakes=(
-                Mistake(
-                    [0.0, 180.0, _ZXZ[2] + _ZXZ[0]],
-                    "you added z and z'': that is what survives at x' = 0°; at x' = 180° the "
-                    "middle turn points the z axis the other way, so the two outer turns oppose "
-                    "each other and the matrix keeps z'' − z",
-                ),
-                Mistake(
-                    [0.0, 180.0, _ZXZ[0] - _ZXZ[2]],
-                    "you took z − z'': at x' = 180° the matrix keeps z'' − z, the other way round",
-                ),
-            ),
-        ),
+        judge=_judge_zxz(_ZXZ),
+        per_student=_some_zxz,
+        judged=_judge_zxz,
         given=lambda: np.array(_ZXZ),
         examples=(
             Example("[0.0, zxz_ex[1], zxz_ex[2] - zxz_ex[0]]", "correct"),
             Example("[0, -180, 340]", "correct", "rotation asked for"),
             Example("[30, 180, 10]", "off", "z = 0°"),
-            Example("[0, 180, 40]", "off", "z'' − z"),
-            Example("[0, 180, 20]", "off", "the other way round"),
+            Example("[0, 180, 40]", "off", "you added z and z''"),
+            Example("[0, 180, 20]", "off", "right up to its sign"),
             Example("np.radians([0, 180, -20])", "off", "radians"),
         ),
         forbidden=("180, -20", "180.0, -20.0"),

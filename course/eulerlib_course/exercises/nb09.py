@@ -57,9 +57,11 @@ _FLAT_SINE = (
     "exactly π/2; take the pitch from atan2 of its sine and its cosine instead"
 )
 _NOISE = (
-    "you used the general formulas: at the pole m20, m00, m12 and m11 are rounding noise (here "
-    "zeros), and atan2 of noise is no angle at all; at the north pole use heading = "
-    "atan2(m02, m22)"
+    "heading 0° and bank 0° do not give this matrix: at the north pole it fixes only heading + "
+    "bank, which is not 0° here. The general formulas give these zeros (at the pole m20, m00, "
+    "m12 and m11 are rounding noise, and atan2 of noise is no angle at all), and so does "
+    "setting the heading to 0°, which is Rose's choice, not Baker's; Baker's choice is bank = "
+    "0°, and the heading then carries the whole sum: heading = atan2(m02, m22)"
 )
 
 EXERCISES = [
@@ -111,24 +113,32 @@ EXERCISES = [
         judge=ChoiceJudge(
             options={"a": "about 1e-20", "b": "about 1e-16", "c": "about 1e-12", "d": "about 1e-8"},
             answer="c",
+            computed=NumberJudge(
+                float(np.finfo(np.float64).eps) / 1e-4,
+                what="your size ε/d",
+                tol=0.01 * float(np.finfo(np.float64).eps) / 1e-4,
+                hint="divide the spacing of doubles next to 1, np.finfo(float).eps, by d",
+            ),
+            computed_what="the size ε/d you computed",
             explanations={
                 "a": "no formula can be that accurate: the doubles next to π/2 are about 2e-16 "
                 "apart, so a pitch near 90° cannot even be stored that closely",
                 "b": "that is what atan2 of the sine and the cosine achieves; asin reads the pitch "
                 "from r31 alone, where the error is about ε/d",
-                "c": "the error of asin is of the order of ε/d = 2e-16 / 1e-4: a rounding error "
-                "of r31 divided by the slope of the sine there, sin d ≈ d = 1e-4",
+                "c": "the error of asin is of the order of ε/d: a rounding error of r31 divided "
+                "by the slope of the sine there, sin d ≈ d = 1e-4",
                 "d": "that is the worst case, near d = 1e-8; further from lock the error of asin "
                 "shrinks like 1/d",
             },
         ),
         examples=(
-            Example("'c'", "correct", "ε/d"),
-            Example("'C '", "correct", "1e-4"),
-            Example("'b'", "off", "atan2"),
-            Example("'d'", "off", "worst case"),
-            Example("'a'", "off", "cannot even be stored"),
-            Example("1e-12", "off", "as text"),
+            Example("('c', np.finfo(float).eps / 1e-4)", "correct", "ε/d"),
+            Example("('C ', 2.22e-12)", "correct", "1e-4"),
+            Example("('c', np.finfo(float).eps * 1e-4)", "off", "size ε/d"),
+            Example("('b', np.finfo(float).eps / 1e-4)", "off", "atan2"),
+            Example("('d', 1e-8)", "off", "worst case"),
+            Example("('a', 1e-20)", "off", "cannot even be stored"),
+            Example("1e-12", "off", "give a pair"),
         ),
     ),
     Exercise(

@@ -49,38 +49,54 @@ def _skew_direction(R: NDArray[np.float64]) -> NDArray[np.float64]:
 _R_NEAR = _near_half_turn()
 _FROM_SKEW = _skew_direction(_R_NEAR)
 
+
+def _some_turn(rng: np.random.Generator) -> NDArray[np.float64]:
+    """A student's matrix: a turn by 0.5 to 2.5 rad about a random axis, rounded to 2 decimals."""
+    axis = rng.normal(size=3)
+    rotvec = np.round(rng.uniform(0.5, 2.5) * axis / np.linalg.norm(axis), 2)
+    return rotvec_to_matrix(rotvec)
+
+
+def _judge_rotvec(rotvec: NDArray[np.float64]) -> ArrayJudge:
+    angle = float(np.linalg.norm(rotvec))
+    axis = rotvec / angle
+    return ArrayJudge(
+        rotvec,
+        what="your rotation vector",
+        mistakes=(
+            Mistake(
+                np.degrees(rotvec),
+                "the length of this vector is the angle in degrees; a rotation vector's "
+                "length is the angle in radians",
+            ),
+            Mistake(axis, "that is the axis alone, a unit vector: multiply it by the angle"),
+            Mistake(
+                -rotvec,
+                "that is the rotation vector of the inverse turn, R_exᵀ: an eigenvector fixes "
+                "the line of the axis, not its direction; choose the sign for which the axis "
+                "points along s = (r32 − r23, r13 − r31, r21 − r12)",
+            ),
+            Mistake(
+                (angle - 2 * math.pi) * axis,
+                "that vector gives the same rotation the long way round (2π − θ about −k), "
+                "but its length is more than π; the question asks for the angle in [0, π]",
+            ),
+            Mistake(
+                2 * math.sin(angle) * axis,
+                "that is s = (r32 − r23, r13 − r31, r21 − r12) = 2 sin θ k: it points along "
+                "the axis, but its length is 2 sin θ, not the angle θ",
+            ),
+        ),
+    )
+
+
 EXERCISES = [
     Exercise(
         id="10.1",
         level="apply",
-        judge=ArrayJudge(
-            _ROTVEC,
-            what="your rotation vector",
-            mistakes=(
-                Mistake(
-                    np.degrees(_ROTVEC),
-                    "the length of this vector is the angle in degrees; a rotation vector's "
-                    "length is the angle in radians",
-                ),
-                Mistake(_AXIS, "that is the axis alone, a unit vector: multiply it by the angle"),
-                Mistake(
-                    -_ROTVEC,
-                    "that is the rotation vector of the inverse turn, R_exᵀ: an eigenvector fixes "
-                    "the line of the axis, not its direction; choose the sign for which the axis "
-                    "points along s = (r32 − r23, r13 − r31, r21 − r12)",
-                ),
-                Mistake(
-                    (_ANGLE - 2 * math.pi) * _AXIS,
-                    "that vector gives the same rotation the long way round (2π − θ about −k), "
-                    "but its length is more than π; the question asks for the angle in [0, π]",
-                ),
-                Mistake(
-                    2 * math.sin(_ANGLE) * _AXIS,
-                    "that is s = (r32 − r23, r13 − r31, r21 − r12) = 2 sin θ k: it points along "
-                    "the axis, but its length is 2 sin θ, not the angle θ",
-                ),
-            ),
-        ),
+        judge=_judge_rotvec(_ROTVEC),
+        per_student=_some_turn,
+        judged=lambda R: _judge_rotvec(matrix_to_rotvec(R)),
         given=lambda: rotvec_to_matrix(_ROTVEC),
         examples=(
             Example("eulerlib.matrix_to_rotvec(R_ex)", "correct"),

@@ -13,10 +13,11 @@ import numpy as np
 
 from eulerlib import euler_to_matrix, matrix_to_quaternion, quaternion_to_matrix, rotvec_to_matrix
 
-from .judges import ArrayJudge, ChoiceJudge, Mistake
+from .judges import ArrayJudge, ChoiceJudge, Mistake, NumberJudge, rounded_to
 from .key import Example, Exercise
 
 ATTITUDE_RATE = 128.0  # Hz, the device's quaternion, matrix and Euler-angle samples
+_DOWN_YPR = (40.0, -90.0, 10.0)  # 14.2: yaw, pitch, roll of an attitude at pitch −90°, degrees
 
 # --- 14.1: the device's quaternion to its attitude matrix ---------------------------------------
 
@@ -82,12 +83,22 @@ EXERCISES = [
                 "d": "roll alone",
             },
             answer="a",
+            computed=NumberJudge(
+                _DOWN_YPR[2] + _DOWN_YPR[0],
+                what="your value",
+                tol=rounded_to(2),
+                unit="deg",
+                modulo=360.0,
+                hint="compute the quantity you chose from the two angles of the question",
+            ),
+            computed_what="the value you computed",
             explanations={
                 "a": "yes: at pitch −90° the first and third axes line up the other way round, "
                 "so the matrix depends on roll + yaw only (Rose, eq 4a), and that sum stays "
                 "smooth while yaw and roll swing in opposite directions",
                 "b": "roll − yaw is what stays defined at pitch +90°, the pole this recording "
-                "visits (eq 4b); at −90° the two turns add, and the matrix keeps their sum",
+                "visits (eq 4b); at −90° the middle turn lays the first axis the other way round: "
+                "write the product out there before carrying eq 4b over",
                 "c": "alone, yaw is defined at neither pole: near one it swings by large "
                 "amounts from one sample to the next, and only a combination with roll is "
                 "pinned down by the matrix",
@@ -97,12 +108,13 @@ EXERCISES = [
             },
         ),
         examples=(
-            Example("'a'", "correct"),
-            Example("' A '", "correct"),
-            Example("'b'", "off", "pitch +90°"),
-            Example("'c'", "off", "alone, yaw"),
-            Example("'d'", "off", "alone, roll"),
-            Example("'roll + yaw'", "off", "give one of the options"),
+            Example("('a', 50)", "correct"),
+            Example("(' A ', 410.0)", "correct"),
+            Example("('a', -30)", "off", "your value"),
+            Example("('b', -30)", "off", "pitch +90°"),
+            Example("('c', 40)", "off", "alone, yaw"),
+            Example("('d', 10)", "off", "alone, roll"),
+            Example("'a'", "off", "give a pair"),
         ),
         forbidden=("answer_2 = 'a'", 'answer_2 = "a"'),
     ),
@@ -113,6 +125,8 @@ EXERCISES = [
             _OMEGA,
             what="your angular velocity",
             tol=1e-6,
+            hint="the turn between the two samples is M₀ᵀ M₁; its rotation vector, divided by "
+            "the time between the samples, is the rate",
             mistakes=(
                 Mistake(
                     _SPACE_OMEGA,

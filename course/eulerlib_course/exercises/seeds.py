@@ -1,0 +1,119 @@
+"""Whose data: the teacher's fixed data, or a student's own, drawn from a seed.
+
+An exercise whose key can make data (its ``per_student`` maker) gives each student data of
+their own: the seed is made from the exercise and the student's name, so the same student gets
+the same data in every session and on every machine, and two students get different data. The
+judge is then built from that student's data, so the check compares with the reference of what
+the student was given.
+
+Who the student is, in this order:
+
+1. when nbgrader grades a submission, the student id in the folder it runs in
+   (``autograded/STUDENT/ASSIGNMENT/`` or ``submitted/STUDENT/ASSIGNMENT/``: nbgrader's
+   ``autograde`` executes each notebook in its autograded copy of the submission folder);
+2. the name given to :func:`student_name` in the notebook (a student copy made with
+   ``--student NAME`` has that cell; a student may type their name in it);
+3. the environment variable ``EULERLIB_STUDENT``, then JupyterHub's ``JUPYTERHUB_USER`` (the
+   login, which is nbgrader's student id on a JupyterHub);
+4. nobody: the teacher's edition, with the data its worked solutions and stored outputs use.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import hashlib
+import os
+import re
+from collections.abc import Iterator
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["as_student", "current_student", "rng_for", "student_name"]
+
+#: The environment variable that names the student when no notebook cell does.
+ENVIRONMENT = "EULERLIB_STUDENT"
+#: JupyterHub's name of the logged-in user, who is the student on a hub.
+HUB_USER = "JUPYTERHUB_USER"
+_GRADED_FOLDER = re.compile(r"(?:autograded|submitted)$")
+
+_named: str | None = None
+
+
+def _check_name(name: object) -> str | None:
+    if name is None or name is Ellipsis:
+        return None
+    if not isinstance(name, str):
+        raise TypeError(f"name must be text, such as 'ada', got {type(name).__name__}")
+    name = name.strip()
+    if not name:
+        return None
+    return name
+
+
+def student_name(name: str | None) -> None:
+    """Say whose data the exercises of this notebook give: ``student_name("ada")``.
+
+    ``...``, ``None`` or empty text means nobody: the teacher's data. While nbgrader grades a
+    submission, the student id of the submission folder wins over the name given here.
+
+    Raises
+    ------
+    TypeError
+        If ``name`` is not text.
+
+    Examples
+    --------
+    >>> student_name("ada"); current_student()
+    'ada'
+    >>> student_name(None); current_student() is None
+    True
+    """
+    global _named
+    _named = _check_name(name)
+
+
+def _nbgrader_student(folder: Path) -> str | None:
+    """The student id when ``folder`` is ``…/autograded/STUDENT/ASSIGNMENT``, else None."""
+    parts = folder.parts
+    if len(parts) >= 3 and _GRADED_FOLDER.fullmatch(parts[-3]):
+        return parts[-2]
+    return None
+
+
+def current_student() -> str | None:
+    """The student whose data the exercises give now (see the module docstring), or None."""
+    graded = _nbgrader_student(Path.cwd())
+    if graded is not None:
+        return graded
+    if _named is not None:
+        return _named
+    return _check_name(os.environ.get(ENVIRONMENT)) or _check_name(os.environ.get(HUB_USER))
+
+
+def rng_for(exercise: str, name: str) -> np.random.Generator:
+    """The random generator of one exercise's data for one student (the same everywhere).
+
+    Examples
+    --------
+    >>> bool(rng_for("05.1", "ada").integers(1000) == rng_for("05.1", "ada").integers(1000))
+    True
+    """
+    digest = hashlib.sha256(f"eulerlib course · {exercise} · {name}".encode()).digest()
+    return np.random.default_rng(int.from_bytes(digest[:16], "little"))
+
+
+@contextlib.contextmanager
+def as_student(name: str | None) -> Iterator[None]:
+    """Within the block, the exercises give ``name``'s data (None: the teacher's); for tests."""
+    global _named
+    saved = _named
+    saved_env = {key: os.environ.pop(key, None) for key in (ENVIRONMENT, HUB_USER)}
+    _named = _check_name(name)
+    try:
+        yield
+    finally:
+        _named = saved
+        for key, value in saved_env.items():
+            if value is not None:
+                os.environ[key] = value
