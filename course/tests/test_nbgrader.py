@@ -35,7 +35,6 @@ import pytest
 
 from eulerlib_course import cli
 from eulerlib_course.exercises import Exercise, exercises
-from eulerlib_course.exercises.feedback import NOT_YET
 from eulerlib_course.nbgrader_edition import (
     CODE_STUB,
     CONFIG_NAME,
@@ -64,6 +63,9 @@ needs_nbgrader_run = pytest.mark.skipif(
 )
 
 CHECK = re.compile(r'check\("(\d\d\.\d)", (answer_\d)\)')
+#: The one warning left in an nbgrader run, which the README explains: ipykernel's, when
+#: autograde starts a kernel on the loopback interface.
+KERNEL_TCP = r"\[IPKernelApp\] WARNING \| Kernel is running over TCP without encryption"
 
 
 # --- a small course in the course's exercise form -------------------------------------------------
@@ -210,14 +212,18 @@ def test_command_writes_one_assignment_per_notebook_with_what_it_uses(
         "nbgrader_config.py",
         f"source/{SMALL}/{SMALL}.ipynb",
         f"source/{SMALL}/data/samples.csv",
-        f"source/{SMALL}/glossary.ipynb",
+        f"source/{SMALL}/glossary.md",
     ]
     assert (out / "source" / SMALL / "data" / "samples.csv").read_text() == "1,2,3\n4,5,6\n"
     config = (out / CONFIG_NAME).read_text()
     assert f'c.ClearSolutions.code_stub = {{"python": "{CODE_STUB}"}}' in config.splitlines()
     compile(config, CONFIG_NAME, "exec")
-    glossary = read(out / "source" / SMALL / "glossary.ipynb")
-    assert all(grading(cell)["locked"] and not grading(cell)["grade"] for cell in glossary.cells)
+    # The glossary is a page, not a second notebook of the assignment, and the links go there.
+    glossary = (out / "source" / SMALL / "glossary.md").read_text(encoding="utf-8")
+    assert glossary == "# Glossary\n\n## Gimbal lock\n\nTwo axes of rotation line up.\n"
+    notebook = read(out / "source" / SMALL / f"{SMALL}.ipynb")
+    links = [c.source for c in notebook.cells if "glossary" in c.source]
+    assert links == ["At [gimbal lock](glossary.md#gimbal-lock) the pitch is ±90°."]
 
 
 def test_a_notebook_without_links_or_data_gets_no_companions(tmp_path: Path) -> None:
@@ -240,7 +246,8 @@ def test_each_exercise_becomes_an_answer_cell_and_a_hidden_test(small_course: Pa
     # Every cell that is not part of an exercise is kept as it is, read-only.
     kept = [c for c in course.cells if not {"exercise", "solution", "check"} & set(tags(c))]
     locked = [c for c in notebook.cells if grading(c)["locked"] and not grading(c)["grade"]]
-    assert [c.source for c in locked] == [c.source for c in kept]
+    glossary_page = [c.source.replace("glossary.ipynb", "glossary.md") for c in kept]
+    assert [c.source for c in locked] == glossary_page
     assert all(grading(c)["solution"] is False for c in locked)
     answers = [c for c in notebook.cells if grading(c)["solution"]]
     tests = [c for c in notebook.cells if grading(c)["grade"]]
@@ -277,7 +284,7 @@ def test_each_exercise_becomes_an_answer_cell_and_a_hidden_test(small_course: Pa
         assert visible == check
         assert hidden.endswith("\n### END HIDDEN TESTS")
         assert f'_answer_key.check("05.{k + 1}", answer_{k + 1})' in hidden
-        assert 'assert _feedback.status == "correct", str(_feedback)' in hidden
+        assert "raise AssertionError(str(_feedback))" in hidden
         assert grading(test)["locked"] and not grading(test)["solution"]
         assert "hide-input" not in tags(answer) and "jupyter" not in answer.metadata
     assert all(c.get("outputs", []) == [] for c in notebook.cells if c.cell_type == "code")
@@ -294,7 +301,9 @@ def test_the_edition_passes_nbgraders_own_metadata_check(small_course: Path) -> 
             validator.validate_cell(cell)
 
 
-def test_hidden_tests_grade_with_the_key_and_say_why(small_course: Path) -> None:
+def test_hidden_tests_grade_with_the_key_and_say_why(
+    small_course: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     """The hidden test of 05.1, run here on every answer of the exercise's test table and on
     ``...``, after the notebook's imports and the exercise's data, and with ``check`` redefined
     as a notebook might."""
@@ -309,15 +318,17 @@ def test_hidden_tests_grade_with_the_key_and_say_why(small_course: Path) -> None
     for example in KEY["05.1"].examples:
         exec(f"answer_1 = {example.code}", namespace)
         if example.status == "correct":
-            exec(hidden, namespace)  # passes
+            exec(hidden, namespace)  # passes, and says so
+            assert capsys.readouterr().out.startswith("Exercise 05.1 — correct: ")
         else:
             with pytest.raises(AssertionError) as failed:
                 exec(hidden, namespace)
             assert str(failed.value).startswith("Exercise 05.1 — off: "), example.code
             assert example.says in str(failed.value), example.code
-    exec("answer_1 = ...", namespace)
-    with pytest.raises(AssertionError, match=r"^Exercise 05\.1 — not yet"):
+    exec("answer_1 = ...", namespace)  # no answer: said so, not "replace the ... and run again"
+    with pytest.raises(AssertionError) as failed:
         exec(hidden, namespace)
+    assert str(failed.value) == "Exercise 05.1 — no answer: answer_1 was handed in as ..."
 
 
 @pytest.mark.parametrize(
@@ -481,21 +492,23 @@ def row(exercise: Exercise, status: str, index: int) -> tuple[str, str, str]:
 def answer(exercise: Exercise, verdict: str, index: int) -> tuple[str | None, str, str]:
     """An answer with that verdict: a row of the test table, or None (the untouched ``...``)."""
     if verdict == "not yet":
-        return None, "not yet", NOT_YET
+        return None, "no answer", f"answer_{exercise.id[-1]} was handed in as ..."
     return row(exercise, verdict, index)
 
 
-def nbgrader(course: Path, *args: str) -> None:
+def nbgrader(course: Path, *args: str, **settings: str) -> str:
     """Run an nbgrader command in the course folder exactly as the README writes it: the
     environment's ``nbgrader`` script by its path, with the environment not on ``PATH`` (the
-    edition's configuration finds nbgrader's ``alembic`` itself)."""
+    edition's configuration finds nbgrader's ``alembic`` itself); ``settings`` are environment
+    variables (a student's ``USER``). Returns what it wrote to stdout and stderr, which must
+    hold no warning."""
     scripts = Path(sys.executable).parent
     path = [
         entry
         for entry in os.environ.get("PATH", "").split(os.pathsep)
         if entry and Path(entry).resolve() != scripts.resolve()
     ]
-    environment = dict(os.environ, PATH=os.pathsep.join(path))
+    environment = dict(os.environ, PATH=os.pathsep.join(path), **settings)
     environment.pop("VIRTUAL_ENV", None)
     result = subprocess.run(
         [str(scripts / "nbgrader"), *args],
@@ -506,6 +519,14 @@ def nbgrader(course: Path, *args: str) -> None:
         timeout=1800,
     )
     assert result.returncode == 0, f"nbgrader {' '.join(args)} failed:\n{result.stderr[-4000:]}"
+    said = result.stdout + result.stderr
+    alarms = [
+        line
+        for line in said.splitlines()
+        if re.search(r"WARNING|ERROR|Warning:", line) and not re.search(KERNEL_TCP, line)
+    ]
+    assert not alarms, f"nbgrader {' '.join(args)} warned:\n" + "\n".join(alarms)
+    return said
 
 
 def grade_course(source: Path, course: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -534,7 +555,12 @@ def grade_course(source: Path, course: Path, capsys: pytest.CaptureFixture[str])
         for key in keys:
             for text in key.forbidden:
                 assert text not in visible, f"{path.name}: the release gives away {text!r}"
-        copy_sources = [c.source for c in student_copy(read(path)).cells]
+        copy_sources = [  # with the glossary as a page
+            c.source.replace("glossary.ipynb", "glossary.md")
+            if c.cell_type == "markdown"
+            else c.source
+            for c in student_copy(read(path)).cells
+        ]
         released = [c.source.removesuffix(f"\n{CODE_STUB}") for c in release.cells]
         assert released == copy_sources, f"{path.name}: the release is not the student copy"
 
@@ -577,7 +603,7 @@ def grade_course(source: Path, course: Path, capsys: pytest.CaptureFixture[str])
         grades["reference", a]["score"] == grades["reference", a]["max_score"] for a in expected_max
     )
 
-    # Each graded test cell shows the key's verdict: nothing when correct, else the diagnosis.
+    # Each graded test cell shows the key's verdict: "correct" printed, else the diagnosis.
     for (student, assignment), verdicts in diagnoses.items():
         graded = read(course / "autograded" / student / assignment / f"{assignment}.ipynb")
         for cell in graded.cells:
@@ -590,6 +616,11 @@ def grade_course(source: Path, course: Path, capsys: pytest.CaptureFixture[str])
             where = f"{student}, {exercise_id}"
             if verdict == "correct":
                 assert not errors, f"{where}: {errors}"
+                printed = "".join(o.get("text", "") for o in cell.outputs)
+                assert printed.startswith(f"Exercise {exercise_id} — correct: "), where
+            elif verdict == "no answer":
+                assert [e.ename for e in errors] == ["AssertionError"], f"{where}: {errors}"
+                assert errors[0].evalue == f"Exercise {exercise_id} — no answer: {says}", where
             else:
                 assert [e.ename for e in errors] == ["AssertionError"], f"{where}: {errors}"
                 assert errors[0].evalue.startswith(f"Exercise {exercise_id} — {verdict}: "), where
