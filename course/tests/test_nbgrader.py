@@ -21,14 +21,17 @@ from __future__ import annotations
 
 import copy
 import csv
+import importlib.util
 import os
 import re
 import shutil
 import subprocess
 import sys
+import tempfile
 import types
 from pathlib import Path
 from typing import Any
+from urllib.parse import urlsplit
 
 import nbformat
 import pytest
@@ -105,7 +108,7 @@ def small_notebook() -> Any:
             "%matplotlib inline\nimport numpy as np\n\nfrom eulerlib import matrix_to_euler\n"
             "from eulerlib_course import check, given"
         ),
-        md("At [gimbal lock](glossary.ipynb#gimbal-lock) the pitch is ±90°."),
+        md("At [gimbal lock](glossary.ipynb#gimbal-lock) the pitch is ±90°: $r_{31} = \\mp 1$."),
         code('samples = np.loadtxt("data/samples.csv", delimiter=",")\nprint(samples.shape)'),
         *exercise(
             "05.1",
@@ -223,7 +226,9 @@ def test_command_writes_one_assignment_per_notebook_with_what_it_uses(
     assert glossary == "# Glossary\n\n## Gimbal lock\n\nTwo axes of rotation line up.\n"
     notebook = read(out / "source" / SMALL / f"{SMALL}.ipynb")
     links = [c.source for c in notebook.cells if "glossary" in c.source]
-    assert links == ["At [gimbal lock](glossary.md#gimbal-lock) the pitch is ±90°."]
+    assert links == [
+        "At [gimbal lock](glossary.md#gimbal-lock) the pitch is ±90°: $r_{31} = \\mp 1$."
+    ]
 
 
 def test_a_notebook_without_links_or_data_gets_no_companions(tmp_path: Path) -> None:
@@ -666,3 +671,145 @@ def test_nbgrader_generates_autogrades_and_exports_the_course(
     if reason is not None:
         pytest.skip(f"the course is not in the exercise form yet: {reason}")
     grade_course(course_part(part, tmp_path / "course"), tmp_path / "grading", capsys)
+
+
+# --- the README's whole cycle: release, collect, feedback ----------------------------------------
+
+
+def chromium_executable() -> str | None:
+    """The system's Chromium, as the website's test finds it (``EULERLIB_CHROMIUM`` or PATH)."""
+    named = os.environ.get("EULERLIB_CHROMIUM")
+    if named:
+        return named if Path(named).is_file() else None
+    return shutil.which("chromium") or shutil.which("chromium-browser")
+
+
+#: Collected in a feedback page once MathJax has finished: its typeset formulas, TeX errors and
+#: the text outside them (where a ``$`` would be math left raw).
+MATH_FACTS = """async () => {
+  if (window.MathJax && window.MathJax.startup) { await window.MathJax.startup.promise; }
+  const copy = document.body.cloneNode(true);
+  copy.querySelectorAll("mjx-container, pre, code, script, style").forEach((e) => e.remove());
+  return {
+    typeset: document.querySelectorAll("mjx-container").length,
+    texErrors: [...document.querySelectorAll("mjx-merror")].map((e) => e.textContent),
+    text: copy.textContent,
+  };
+}"""
+
+
+def open_offline(page_path: Path) -> tuple[dict[str, Any], list[str], list[str]]:
+    """Open a local page in the system's Chromium (headless, a fresh profile) with every request
+    to another host refused: what :data:`MATH_FACTS` finds, the refused requests and the
+    console's errors."""
+    from playwright.sync_api import sync_playwright
+
+    refused: list[str] = []
+    errors: list[str] = []
+
+    def route(request_route: Any) -> None:
+        url = request_route.request.url
+        if url.startswith("file:") or urlsplit(url).hostname == "127.0.0.1":
+            request_route.continue_()
+        else:
+            refused.append(url)
+            request_route.abort()
+
+    arguments = ["--disable-background-networking", "--disable-component-update", "--no-first-run"]
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        arguments.append("--no-sandbox")  # Chromium refuses to run as root otherwise
+    with tempfile.TemporaryDirectory() as profile, sync_playwright() as playwright:
+        context = playwright.chromium.launch_persistent_context(
+            profile, executable_path=chromium_executable(), headless=True, args=arguments
+        )
+        try:
+            page = context.new_page()
+            page.route("**/*", route)
+            page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+            page.on("pageerror", lambda error: errors.append(str(error)))
+            page.goto(page_path.as_uri(), wait_until="load")
+            facts = page.evaluate(MATH_FACTS)
+        finally:
+            context.close()
+    return facts, refused, errors
+
+
+def browser_missing() -> str | None:
+    """Why a page cannot be opened in Chromium here, or None."""
+    if importlib.util.find_spec("playwright") is None:
+        return 'no Playwright: pip install -e "./course[site]"'
+    if chromium_executable() is None:
+        return "no Chromium: install Debian's chromium package, or name one in EULERLIB_CHROMIUM"
+    return None
+
+
+@needs_nbgrader_run
+def test_the_readme_cycle_release_collect_autograde_feedback(
+    small_course: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The README's cycle through nbgrader's exchange, as a teacher and a student run it: the
+    teacher releases, the student fetches, answers one exercise and submits, the teacher collects,
+    autogrades, writes and releases the feedback, the student fetches it. The feedback page
+    shows the right answer as correct, the blank ones as not handed in, and typesets its math in
+    Chromium with the network refused. The formgrader lists the notebook alone, not the
+    glossary."""
+    course, exchange, student = tmp_path / "grading", tmp_path / "exchange", tmp_path / "alice"
+    status, _, err = run_cli(
+        capsys, "notebooks", "nbgrader", "--src", str(small_course), "--out", str(course)
+    )
+    assert status == 0, err
+    exchange.mkdir()
+    exchange.chmod(0o777)  # a folder every user can write, as nbgrader's exchange must be
+    setting = f"c.Exchange.root = {str(exchange)!r}\n"  # as the README says to set it
+    with (course / CONFIG_NAME).open("a", encoding="utf-8") as config:
+        config.write(setting)
+    student.mkdir()
+    (student / CONFIG_NAME).write_text(
+        f"c = get_config()\n{setting}c.Exchange.cache = {str(tmp_path / 'cache')!r}\n",
+        encoding="utf-8",
+    )
+
+    nbgrader(course, "generate_assignment", SMALL)
+    nbgrader(course, "release_assignment", SMALL)
+    nbgrader(student, "fetch_assignment", SMALL, "--course", "eulerlib")
+    fetched = student / SMALL / f"{SMALL}.ipynb"
+    solution = dict(exercises_of(small_notebook()))["05.1"]
+    nbformat.write(fill_in(read(fetched), {"05.1": solution, "05.2": None, "05.3": None}), fetched)
+    nbgrader(student, "submit", SMALL, "--course", "eulerlib")  # as the user who runs the test
+    nbgrader(course, "collect", SMALL)
+    from nbgrader.utils import get_username
+
+    alice = get_username()  # the exchange knows a student by their login
+    assert (course / "submitted" / alice / SMALL / f"{SMALL}.ipynb").is_file()
+    nbgrader(course, "autograde", SMALL)
+    nbgrader(course, "generate_feedback", SMALL)
+    nbgrader(course, "release_feedback", SMALL)
+    nbgrader(student, "fetch_feedback", SMALL, "--course", "eulerlib")
+    nbgrader(course, "export", "--to", "grades.csv")
+
+    with (course / "grades.csv").open(newline="") as stream:
+        (grade,) = list(csv.DictReader(stream))
+    assert (grade["student_id"], float(grade["score"])) == (alice, POINTS[KEY["05.1"].level])
+
+    from nbgrader.api import Gradebook
+
+    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gradebook:
+        listed = [notebook.name for notebook in gradebook.find_assignment(SMALL).notebooks]
+    assert listed == [SMALL]  # what the formgrader lists: no glossary
+
+    (page,) = (student / SMALL / "feedback").glob(f"*/{SMALL}.html")
+    text = page.read_text(encoding="utf-8")
+    assert "Exercise 05.1 — correct: " in text
+    assert "Exercise 05.2 — no answer: answer_2 was handed in as ..." in text
+    assert "replace the ..." not in text
+    assert "cdnjs" not in text and "mathjax/2.7" not in text.lower()
+
+    reason = browser_missing()
+    if reason is not None:
+        if os.environ.get("EULERLIB_SITE_TEST") == "required":
+            pytest.fail(reason)
+        pytest.skip(f"the feedback page is not opened in a browser: {reason}")
+    facts, refused, errors = open_offline(page)
+    assert refused == [] and errors == []
+    assert facts["typeset"] >= 1 and facts["texErrors"] == []
+    assert "r_{31}" not in facts["text"] and "$" not in facts["text"]
