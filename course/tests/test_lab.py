@@ -4,12 +4,14 @@ network refused.
 The test starts ``jupyter lab`` as a learner would (the environment's own, ``--no-browser``), on
 the loopback interface with a token and a free port, with its settings, workspaces, runtime and
 configuration folders in a temporary folder (a learner's own settings change nothing, and
-nothing is left behind). It serves a working copy of the course (``notebooks/`` copied into the
-temporary folder): the committed notebooks are never opened, so nothing the browser does can
-write over them. The system's Chromium, driven headless by Playwright (never a downloaded
-browser), opens notebook 07 (the animation and the explorer's widgets) and runs all its cells,
-then the glossary; every request to a host other than the loopback interface is refused, as with
-the network off, and listed, and the test fails on any. It also fails when a cell of notebook 07
+nothing is left behind). It serves the working copy that the README's command opens
+(``eulerlib-course notebooks copy``, into the temporary folder): the committed notebooks are
+never opened, so nothing the browser does can write over them, and the test checks that, after
+running and saving notebook 07, the committed notebook is unchanged and the copy was saved. The
+system's Chromium, driven headless by Playwright (never a downloaded browser), opens notebook 07
+(the animation and the explorer's widgets) and runs all its cells, then the glossary; every
+request to a host other than the loopback interface is refused, as with the network off, and
+listed, and the test fails on any. It also fails when a cell of notebook 07
 ends in an error or does not run, or when the glossary's mathematics is not typeset.
 
 Like the website's test it needs Playwright (the ``site`` extra) and a ``chromium`` executable;
@@ -37,6 +39,8 @@ from typing import Any
 from urllib.parse import urlsplit
 
 import pytest
+
+from eulerlib_course.working_copy import write_working_copy
 
 REPO = Path(__file__).resolve().parents[2]
 LOOPBACK = "127.0.0.1"
@@ -125,8 +129,8 @@ def lab(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Lab]:
             pytest.fail(reason)
         pytest.skip(reason)
     base = tmp_path_factory.mktemp("lab")
-    root = base / "course"
-    shutil.copytree(REPO / "notebooks", root, ignore=shutil.ignore_patterns("__pycache__"))
+    root = base / "my-course"
+    write_working_copy(REPO / "notebooks", root)  # what the README's command opens
     token, port = secrets.token_hex(16), free_port()
     folders = {name: base / name for name in ("settings", "workspaces", "runtime", "config")}
     for folder in folders.values():
@@ -234,9 +238,11 @@ def test_notebook_07_runs_in_jupyterlab_and_asks_no_other_host(
     lab: Lab, browser: tuple[Any, Requests]
 ) -> None:
     context, requests = browser
+    committed = (REPO / "notebooks" / ANIMATED).read_bytes()
     page = open_notebook(context, lab, ANIMATED, requests)
     page.set_default_timeout(600_000)
     cells = page.evaluate(RUN_ALL)
+    page.evaluate('() => window.jupyterapp.commands.execute("docmanager:save")')
     page.wait_for_load_state("networkidle")
     assert cells, "no code cell found"
     assert [c for c in cells if c["errors"]] == []
@@ -244,6 +250,8 @@ def test_notebook_07_runs_in_jupyterlab_and_asks_no_other_host(
     assert requests.refused == []
     assert requests.console_errors == []
     page.close()
+    assert (REPO / "notebooks" / ANIMATED).read_bytes() == committed
+    assert (lab.root / ANIMATED).read_bytes() != committed  # saved, into the copy
 
 
 def test_the_glossary_typesets_in_jupyterlab_and_asks_no_other_host(
