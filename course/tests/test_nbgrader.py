@@ -22,13 +22,19 @@ from __future__ import annotations
 import copy
 import csv
 import importlib.util
+import json
 import os
 import re
+import secrets
 import shutil
+import socket
 import subprocess
 import sys
 import tempfile
+import time
 import types
+import urllib.error
+import urllib.request
 from pathlib import Path
 from typing import Any
 from urllib.parse import urlsplit
@@ -743,6 +749,69 @@ def browser_missing() -> str | None:
     return None
 
 
+def formgrader_lists(course: Path, tmp_path: Path, assignment: str) -> tuple[list[str], list[str]]:
+    """Start JupyterLab in the course folder as the README says (the environment's ``jupyter``,
+    here headless on the loopback interface with a token and its own runtime and configuration
+    folders) and ask nbgrader's formgrader for the assignments and the notebooks of
+    ``assignment``, by name."""
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        port = int(probe.getsockname()[1])
+    token = secrets.token_hex(16)
+    command = [
+        str(Path(sys.executable).parent / "jupyter"),
+        "lab",
+        "--no-browser",
+        "--ServerApp.ip=127.0.0.1",
+        f"--ServerApp.port={port}",
+        "--ServerApp.port_retries=0",
+        f"--IdentityProvider.token={token}",
+    ]
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        command.append("--allow-root")
+    folders = {name: tmp_path / f"lab-{name}" for name in ("runtime", "config")}
+    for folder in folders.values():
+        folder.mkdir()
+    environment = dict(
+        os.environ,
+        JUPYTER_RUNTIME_DIR=str(folders["runtime"]),
+        JUPYTER_CONFIG_DIR=str(folders["config"]),
+    )
+    log_path = tmp_path / "lab.log"
+    with log_path.open("w") as log:
+        server = subprocess.Popen(
+            command, cwd=course, env=environment, stdout=log, stderr=subprocess.STDOUT
+        )
+        try:
+
+            def ask(route: str) -> Any:
+                request = urllib.request.Request(
+                    f"http://127.0.0.1:{port}/formgrader/api/{route}",
+                    headers={"Authorization": f"token {token}"},
+                )
+                with urllib.request.urlopen(request, timeout=60) as reply:
+                    return json.load(reply)
+
+            deadline = time.monotonic() + 120
+            while True:
+                try:
+                    assignments = ask("assignments")
+                    break
+                except (urllib.error.URLError, ConnectionError):
+                    if server.poll() is not None or time.monotonic() > deadline:
+                        log.flush()
+                        pytest.fail("JupyterLab did not start:\n" + log_path.read_text())
+                    time.sleep(0.5)
+            notebooks = ask(f"notebooks/{assignment}")
+        finally:
+            server.terminate()
+            try:
+                server.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                server.kill()
+    return [a["name"] for a in assignments], [n["name"] for n in notebooks]
+
+
 @needs_nbgrader_run
 def test_the_readme_cycle_release_collect_autograde_feedback(
     small_course: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
@@ -796,6 +865,7 @@ def test_the_readme_cycle_release_collect_autograde_feedback(
     with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gradebook:
         listed = [notebook.name for notebook in gradebook.find_assignment(SMALL).notebooks]
     assert listed == [SMALL]  # what the formgrader lists: no glossary
+    assert formgrader_lists(course, tmp_path, SMALL) == ([SMALL], [SMALL])
 
     (page,) = (student / SMALL / "feedback").glob(f"*/{SMALL}.html")
     text = page.read_text(encoding="utf-8")
