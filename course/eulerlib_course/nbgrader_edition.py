@@ -23,8 +23,9 @@ question's data and ``answer_k = ...``), the ``solution`` cell (the worked answe
   which the student runs for feedback, followed by a hidden test, between ``### BEGIN HIDDEN
   TESTS`` and ``### END HIDDEN TESTS``, that asks the answer key itself
   (:func:`eulerlib_course.exercises.check`, imported afresh) and fails unless the verdict is
-  ``correct``. The assertion's message is the feedback, so a student's graded notebook says why
-  an answer lost its points. The reference and the tolerance stay in the key: the same judge
+  ``correct``. Its output is the feedback: a right answer prints the key's verdict, an answer
+  left at ``...`` fails saying that no answer was handed in, and a wrong one fails with the key's
+  diagnosis, so a student's graded notebook says why an answer lost its points. The reference and the tolerance stay in the key: the same judge
   decides the self-check and the grade, and accepts every answer that is equally right.
 
 The glossary goes with each assignment whose notebook links to it, as ``glossary.md`` (its
@@ -302,6 +303,9 @@ def nbgrader_config() -> str:
     that runs nbgrader first on ``PATH``: nbgrader starts the ``alembic`` command from ``PATH``
     when it creates the gradebook, and a teacher who runs ``../.venv/bin/nbgrader`` without
     activating the environment would otherwise meet ``FileNotFoundError: 'alembic'``.
+    Then come the settings of :func:`_grading_settings`: autograde without the false "checksum
+    has changed" of hidden tests, feedback pages with MathJax in them, no SQLAlchemy session
+    warnings from nbgrader, and the course's name in the exchange (:data:`COURSE_ID`).
     """
     return (
         "# nbgrader settings of the eulerlib course, as written by\n"

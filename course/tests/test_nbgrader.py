@@ -14,7 +14,12 @@ Two parts.
   exported by ``nbgrader export`` (CSV) must be the points of the answers the test tables call
   correct, and each graded notebook must show the diagnosis the test table expects. This runs on
   the small course and on the real one (``notebooks/``) once its notebooks are in the exercise
-  form.
+  form. The README's whole cycle runs once more through nbgrader's exchange
+  (``release_assignment``, a student's ``fetch_assignment`` and ``submit``, ``collect``,
+  ``autograde``, ``generate_feedback``, ``release_feedback``, ``fetch_feedback``): no command
+  may print a warning but the one the README explains, the formgrader (JupyterLab started in
+  the course folder) lists each assignment's notebook alone, and the feedback page typesets its
+  mathematics in Chromium with every other host refused.
 """
 
 from __future__ import annotations
