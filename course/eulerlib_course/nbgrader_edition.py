@@ -25,8 +25,9 @@ question's data and ``answer_k = ...``), the ``solution`` cell (the worked answe
   (:func:`eulerlib_course.exercises.check`, imported afresh) and fails unless the verdict is
   ``correct``. Its output is the feedback: a right answer prints the key's verdict, an answer
   left at ``...`` fails saying that no answer was handed in, and a wrong one fails with the key's
-  diagnosis, so a student's graded notebook says why an answer lost its points. The reference and the tolerance stay in the key: the same judge
-  decides the self-check and the grade, and accepts every answer that is equally right.
+  diagnosis, so a student's graded notebook says why an answer lost its points. The reference
+  and the tolerance stay in the key: the same judge decides the self-check and the grade, and
+  accepts every answer that is equally right.
 
 The glossary goes with each assignment whose notebook links to it, as ``glossary.md`` (its
 text, which JupyterLab shows rendered when a link is followed), and the links point there: a
