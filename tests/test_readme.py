@@ -57,7 +57,9 @@ def test_ci_runs_the_nbgrader_tests_that_the_readme_command_skips() -> None:
 def test_readme_opens_the_course_in_jupyterlab() -> None:
     commands = [line for block in _blocks("bash") for line in block.splitlines()]
     assert any(
-        c.startswith("python3 -m venv .venv") and "jupyter lab notebooks/" in c for c in commands
+        c.startswith("python3 -m venv .venv")
+        and c.endswith("notebooks copy --out my-course/ && .venv/bin/jupyter lab my-course/")
+        for c in commands
     )
 
 

@@ -1,4 +1,4 @@
-"""The course's commands: ``eulerlib-course notebooks student|nbgrader|refresh``,
+"""The course's commands: ``eulerlib-course notebooks student|nbgrader|copy|refresh``,
 ``eulerlib-course figures`` and ``eulerlib-course site build``.
 
 * ``eulerlib-course notebooks student --out DIR [--src DIR] [--force]`` (for teachers) writes a
@@ -9,6 +9,9 @@
   ``DIR/nbgrader_config.py`` and one assignment per notebook under ``DIR/source/``
   (:mod:`eulerlib_course.nbgrader_edition`). It needs the ``teach`` extra (nbgrader) and does
   not overwrite an earlier edition unless ``--force`` is given.
+* ``eulerlib-course notebooks copy --out DIR [--src DIR]`` (for learners) copies the course into
+  a working folder to open in JupyterLab (:mod:`eulerlib_course.working_copy`), keeping every
+  file already there.
 * ``eulerlib-course notebooks refresh [NOTEBOOK ...]`` (for maintainers) re-executes notebooks
   and stores them in normal form (:mod:`eulerlib_course.notebook_form`); all of ``notebooks/`` by
   default.
@@ -127,6 +130,19 @@ def configure_notebooks(parser: argparse.ArgumentParser) -> None:
     refresh.add_argument(
         "notebooks", nargs="*", type=Path, help="notebooks to refresh (default: notebooks/*.ipynb)"
     )
+    working = actions.add_parser(
+        "copy",
+        help="make a working copy of the course to open in JupyterLab, keeping your work",
+        description="Copy the course notebooks, the glossary and data/ into a working folder, to "
+        "open in JupyterLab instead of the committed notebooks. Files already in the folder "
+        "(your work) are kept; only missing ones are copied.",
+    )
+    working.add_argument(
+        "--out", type=output_folder, required=True, help="the working copy's folder"
+    )
+    working.add_argument(
+        "--src", type=Path, help="folder of the course notebooks (default: notebooks/)"
+    )
     parser.set_defaults(run=run_notebooks)
 
 
@@ -176,13 +192,15 @@ def run_key(args: argparse.Namespace) -> int:
 
 
 def run_notebooks(args: argparse.Namespace) -> int:
-    """Carry out ``eulerlib-course notebooks student|nbgrader|refresh``."""
+    """Carry out ``eulerlib-course notebooks student|nbgrader|copy|refresh``."""
     if args.action == "nbgrader":
         require(GRADING_TOOLS, extra="teach", needed_by="eulerlib-course notebooks nbgrader")
         return _nbgrader(args.src, args.out, force=args.force, graded=args.graded)
     require(NOTEBOOK_TOOLS, extra=None, needed_by=f"eulerlib-course notebooks {args.action}")
     if args.action == "refresh":
         return _refresh(args.notebooks)
+    if args.action == "copy":
+        return _working_copy(args.src, args.out)
     return _student(args.src, args.out, force=args.force, student=args.student)
 
 
@@ -195,6 +213,15 @@ def _student(src: Path | None, out: Path, *, force: bool, student: str | None = 
     except FileExistsError as error:
         raise ValueError(f"{error}; pass --force to overwrite them") from None
     print(f"wrote {len(written)} student copies to {out}")
+    return 0
+
+
+def _working_copy(src: Path | None, out: Path) -> int:
+    from eulerlib_course.working_copy import write_working_copy
+
+    source = src if src is not None else _course_folder(NOTEBOOK_FOLDER, "pass --src DIR")
+    copied, kept = write_working_copy(source, out)
+    print(f"copied {len(copied)} files of the course to {out} ({len(kept)} already there, kept)")
     return 0
 
 

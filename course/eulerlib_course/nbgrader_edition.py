@@ -7,7 +7,7 @@ committed notebooks), one assignment per numbered notebook::
 
     DIR/nbgrader_config.py
     DIR/source/05_matrix_to_angles/05_matrix_to_angles.ipynb
-    DIR/source/05_matrix_to_angles/glossary.ipynb      (when the notebook links to it)
+    DIR/source/05_matrix_to_angles/glossary.md         (when the notebook links to it)
     DIR/source/05_matrix_to_angles/data/...            (when the notebook reads from it)
 
 Each exercise of the course is four cells: the question (markdown), the ``exercise`` cell (the
@@ -23,9 +23,15 @@ question's data and ``answer_k = ...``), the ``solution`` cell (the worked answe
   which the student runs for feedback, followed by a hidden test, between ``### BEGIN HIDDEN
   TESTS`` and ``### END HIDDEN TESTS``, that asks the answer key itself
   (:func:`eulerlib_course.exercises.check`, imported afresh) and fails unless the verdict is
-  ``correct``. The assertion's message is the feedback, so a student's graded notebook says why
-  an answer lost its points. The reference and the tolerance stay in the key: the same judge
-  decides the self-check and the grade, and accepts every answer that is equally right.
+  ``correct``. Its output is the feedback: a right answer prints the key's verdict, an answer
+  left at ``...`` fails saying that no answer was handed in, and a wrong one fails with the key's
+  diagnosis, so a student's graded notebook says why an answer lost its points. The reference
+  and the tolerance stay in the key: the same judge decides the self-check and the grade, and
+  accepts every answer that is equally right.
+
+The glossary goes with each assignment whose notebook links to it, as ``glossary.md`` (its
+text, which JupyterLab shows rendered when a link is followed), and the links point there: a
+notebook would be a second notebook of every assignment, listed and graded by nbgrader.
 
 After the first cell that imports from ``eulerlib_course`` comes the **name cell** of the
 student copies (:func:`eulerlib_course.student.name_cell_source`), as an ungraded answer cell:
@@ -69,7 +75,7 @@ import inspect
 import re
 import shutil
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -85,6 +91,7 @@ from eulerlib_course.student import name_cell_source
 __all__ = [
     "CODE_STUB",
     "CONFIG_NAME",
+    "COURSE_ID",
     "POINTS",
     "SCHEMA_VERSION",
     "Edition",
@@ -102,6 +109,8 @@ SCHEMA_VERSION = 3
 CODE_STUB = "# your answer goes in place of the ... above"
 #: The name of the configuration file written next to ``source/``.
 CONFIG_NAME = "nbgrader_config.py"
+#: The course's name in nbgrader's exchange (``release_assignment``, ``collect``, ``fetch``).
+COURSE_ID = "eulerlib"
 
 BEGIN_SOLUTION, END_SOLUTION = "### BEGIN SOLUTION", "### END SOLUTION"
 BEGIN_HIDDEN_TESTS, END_HIDDEN_TESTS = "### BEGIN HIDDEN TESTS", "### END HIDDEN TESTS"
@@ -111,6 +120,7 @@ _CHECK = re.compile(r'check\("(\d\d\.\d)", (answer_\d)\)')
 _TAGS = ("exercise", "solution", "check")
 _COURSE_TAGS = frozenset({*_TAGS, "hide-input"})
 _GLOSSARY = "glossary.ipynb"
+_GLOSSARY_PAGE = "glossary.md"
 _DATA = "data"
 
 
@@ -193,7 +203,7 @@ def _test_cell(
             '_key = {"__name__": "answer_key"}',
             f'exec(compile(_KEY_SOURCE, "answer key {exercise_id[:2]}", "exec"), _key)',
             f'_feedback = _grade(_key["EXERCISES"], "{exercise_id}", {answer})',
-            'assert _feedback.status == "correct", str(_feedback)',
+            *_verdict_lines(exercise_id, answer),
             END_HIDDEN_TESTS,
         ]
     else:
@@ -204,7 +214,7 @@ def _test_cell(
             "import eulerlib_course.exercises as _answer_key",
             "",
             f'_feedback = _answer_key.check("{exercise_id}", {answer})',
-            'assert _feedback.status == "correct", str(_feedback)',
+            *_verdict_lines(exercise_id, answer),
             END_HIDDEN_TESTS,
         ]
     cell = nbformat.v4.new_code_cell(
@@ -213,6 +223,22 @@ def _test_cell(
     cell.metadata["nbgrader"] = _nbgrader(grade_id, grade=True, solution=False, locked=True)
     cell.metadata["nbgrader"]["points"] = points
     return cell
+
+
+def _verdict_lines(exercise_id: str, answer: str) -> list[str]:
+    """The hidden test's last lines: a right answer prints the key's verdict, so the graded
+    notebook shows it; an answer left at ``...`` fails saying that no answer was handed in (not
+    the self-check's "replace the ... and run the cell again"); a wrong one fails with the key's
+    diagnosis."""
+    blank = f"Exercise {exercise_id} — no answer: {answer} was handed in as ..."
+    return [
+        'if _feedback.status == "correct":',
+        "    print(_feedback)",
+        'elif _feedback.status == "not yet":',
+        f"    raise AssertionError({blank!r})",
+        "else:",
+        "    raise AssertionError(str(_feedback))",
+    ]
 
 
 def _lock(cell: Any, grade_id: str) -> Any:
@@ -333,10 +359,18 @@ def nbgrader_notebook(notebook: Any, name: str, *, graded: bool = False) -> Any:
     return edition
 
 
-def _locked_glossary(notebook: Any) -> Any:
-    glossary = _cleared(notebook)
-    glossary.cells = [_lock(cell, f"glossary-{i:03d}") for i, cell in enumerate(glossary.cells)]
-    return glossary
+def _glossary_page(notebook: Any) -> str:
+    """The glossary's text as one Markdown file (its cells are Markdown)."""
+    parts = [cell.source.strip() for cell in notebook.cells if cell.cell_type == "markdown"]
+    return "\n\n".join(parts) + "\n"
+
+
+def _linking_glossary_page(notebook: Any) -> Any:
+    """``notebook`` with its links to the glossary notebook pointing at the glossary page."""
+    for cell in notebook.cells:
+        if cell.cell_type == "markdown":
+            cell.source = cell.source.replace(_GLOSSARY, _GLOSSARY_PAGE)
+    return notebook
 
 
 def nbgrader_config() -> str:
@@ -348,6 +382,9 @@ def nbgrader_config() -> str:
     that runs nbgrader first on ``PATH``: nbgrader starts the ``alembic`` command from ``PATH``
     when it creates the gradebook, and a teacher who runs ``../.venv/bin/nbgrader`` without
     activating the environment would otherwise meet ``FileNotFoundError: 'alembic'``.
+    Then come the settings of :func:`_grading_settings`: autograde without the false "checksum
+    has changed" of hidden tests, feedback pages with MathJax in them, no SQLAlchemy session
+    warnings from nbgrader, and the course's name in the exchange (:data:`COURSE_ID`).
     """
     return (
         "# nbgrader settings of the eulerlib course, as written by\n"
@@ -369,7 +406,39 @@ def nbgrader_config() -> str:
         "# Each answer cell keeps the course's `answer_k = ...` line above the worked solution,\n"
         "# so the released copy needs only a note where the solution was (nbgrader's default,\n"
         "# `raise NotImplementedError()`, would fail every answer).\n"
-        f'c.ClearSolutions.code_stub = {{"python": "{CODE_STUB}"}}\n'
+        f'c.ClearSolutions.code_stub = {{"python": "{CODE_STUB}"}}\n' + _grading_settings()
+    )
+
+
+def _grading_settings() -> str:
+    """The settings of autograde, the feedback pages and the exchange.
+
+    See :mod:`eulerlib_course.nbgrader_hooks`.
+    """
+    return (
+        "\n"
+        "# autograde: a test cell handed back as it was released is not reported as changed\n"
+        "# (nbgrader stores its checksum with the hidden tests, which the release never had).\n"
+        "# The feedback pages: MathJax written into each page, so that it typesets offline.\n"
+        "import warnings\n"
+        "\n"
+        "from eulerlib_course import nbgrader_hooks\n"
+        "\n"
+        "c.Autograde.sanitize_preprocessors = nbgrader_hooks.sanitize_preprocessors()\n"
+        "c.HTMLExporter.extra_template_basedirs = nbgrader_hooks.feedback_template_dirs()\n"
+        "c.HTMLExporter.filters = {\n"
+        '    "mathjax_script": "eulerlib_course.nbgrader_hooks.mathjax_script"\n'
+        "}\n"
+        "\n"
+        "# nbgrader 0.9 with SQLAlchemy 2 warns about its own gradebook sessions on every\n"
+        "# submission; nothing is wrong with the grades.\n"
+        "warnings.filterwarnings('ignore', message=r'Object of type <\\w+> not in session')\n"
+        "\n"
+        "# The course's name in nbgrader's exchange (release_assignment, collect,\n"
+        "# release_feedback; students fetch with --course eulerlib). The exchange is\n"
+        "# /srv/nbgrader/exchange unless you set another folder that teacher and students\n"
+        "# can all write, e.g. c.Exchange.root = '/home/shared/exchange'.\n"
+        f"c.CourseDirectory.course_id = {COURSE_ID!r}\n"
     )
 
 
@@ -378,12 +447,14 @@ class Edition:
     """The files of the nbgrader edition: path relative to the output folder → what to write.
 
     ``notebooks`` holds the notebooks (nbformat nodes), ``files`` the files copied as they are
-    (relative path → source path), ``config`` the text of ``nbgrader_config.py``.
+    (relative path → source path), ``config`` the text of ``nbgrader_config.py``, ``texts``
+    the text files written (relative path → text: the glossary page).
     """
 
     notebooks: dict[Path, Any]
     files: dict[Path, Path]
     config: str
+    texts: dict[Path, str] = field(default_factory=dict)
 
     @property
     def assignments(self) -> list[str]:
@@ -394,6 +465,7 @@ class Edition:
         """Every file the edition writes, relative to the output folder."""
         yield Path(CONFIG_NAME)
         yield from self.notebooks
+        yield from self.texts
         yield from self.files
 
 
@@ -420,7 +492,8 @@ def nbgrader_edition(source: str | Path, *, graded: bool = False) -> Edition:
     if not paths:
         raise ValueError(f"no course notebooks (NN_name.ipynb) in {source}")
     glossary_path, data = source / _GLOSSARY, source / _DATA
-    glossary = _locked_glossary(read_notebook(glossary_path)) if glossary_path.is_file() else None
+    glossary = _glossary_page(read_notebook(glossary_path)) if glossary_path.is_file() else None
+    texts: dict[Path, str] = {}
     notebooks: dict[Path, Any] = {}
     files: dict[Path, Path] = {}
     for path in paths:
@@ -429,12 +502,13 @@ def nbgrader_edition(source: str | Path, *, graded: bool = False) -> Edition:
         notebooks[folder / path.name] = nbgrader_notebook(notebook, path.name, graded=graded)
         text = "\n".join(cell.source for cell in notebook.cells if cell.cell_type == "markdown")
         if glossary is not None and _GLOSSARY in text:
-            notebooks[folder / _GLOSSARY] = glossary
+            texts[folder / _GLOSSARY_PAGE] = glossary
+            _linking_glossary_page(notebooks[folder / path.name])
         if data.is_dir() and _mentions_data(notebook, data):
             for file in sorted(data.rglob("*")):
                 if file.is_file() and "__pycache__" not in file.parts:
                     files[folder / _DATA / file.relative_to(data)] = file
-    return Edition(notebooks, files, nbgrader_config())
+    return Edition(notebooks, files, nbgrader_config(), texts)
 
 
 def write_nbgrader_edition(
@@ -488,6 +562,9 @@ def write_nbgrader_edition(
     for relative, notebook in edition.notebooks.items():
         (out / relative).parent.mkdir(parents=True, exist_ok=True)
         write_notebook(notebook, out / relative)
+    for relative, text in edition.texts.items():
+        (out / relative).parent.mkdir(parents=True, exist_ok=True)
+        (out / relative).write_text(text, encoding="utf-8")
     for relative, file in edition.files.items():
         (out / relative).parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(file, out / relative)

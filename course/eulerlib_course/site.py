@@ -151,18 +151,19 @@ def jupyterlab_command(readme: str) -> str:
     Raises
     ------
     ValueError
-        If no line of a ``bash`` block of the README opens ``notebooks/`` in JupyterLab.
+        If no line of a ``bash`` block of the README copies the course and opens it in
+        JupyterLab.
 
     Examples
     --------
-    >>> jupyterlab_command("```bash\\npip install x && jupyter lab notebooks/\\n```\\n")
-    'pip install x && jupyter lab notebooks/'
+    >>> jupyterlab_command("```bash\\nx && notebooks copy --out c/ && jupyter lab c/\\n```")
+    'x && notebooks copy --out c/ && jupyter lab c/'
     """
     for block in re.findall(r"```bash\n(.*?)```", readme, flags=re.DOTALL):
         for line in block.splitlines():
-            if "jupyter lab notebooks/" in line:
+            if "notebooks copy --out" in line and "jupyter lab " in line:
                 return str(line).strip()
-    raise ValueError("the README shows no command that opens notebooks/ in JupyterLab")
+    raise ValueError("the README shows no command that opens a copy of the course in JupyterLab")
 
 
 def course_pages(notebook_folder: Path) -> list[Path]:

@@ -91,3 +91,65 @@ def test_readme_command_lines_are_commands_the_course_cli_takes() -> None:
             parser.parse_args(shlex.split(command)[1:])
         except SystemExit:
             pytest.fail(f"README shows a command eulerlib-course does not take: {command.strip()}")
+
+
+# --- the working copy that the README's JupyterLab command opens ------------------------------
+
+
+def test_the_working_copy_is_the_course_and_keeps_the_learners_work(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """``notebooks copy`` copies every notebook and data file byte for byte; run again, it keeps
+    what is there (a notebook emptied by a Run All that stopped, an answer typed in) and copies
+    back only what is missing. The committed notebooks are never written."""
+    course = REPO / "notebooks"
+    committed = {
+        path.relative_to(course): path.read_bytes()
+        for path in course.rglob("*")
+        if path.is_file() and "__pycache__" not in path.parts
+    }
+    out = tmp_path / "my-course"
+    assert cli.main(["notebooks", "copy", "--out", str(out)]) == 0
+    copied = {path.relative_to(out): path.read_bytes() for path in out.rglob("*") if path.is_file()}
+    assert copied == committed
+    assert capsys.readouterr().out == (
+        f"copied {len(committed)} files of the course to {out} (0 already there, kept)\n"
+    )
+
+    notebook = out / "07_gimbal_lock_seen.ipynb"
+    notebook.write_text("my work\n")
+    (out / "glossary.ipynb").unlink()
+    assert cli.main(["notebooks", "copy", "--out", str(out)]) == 0
+    assert capsys.readouterr().out == (
+        f"copied 1 files of the course to {out} ({len(committed) - 1} already there, kept)\n"
+    )
+    assert notebook.read_text() == "my work\n"
+    assert (out / "glossary.ipynb").read_bytes() == committed[Path("glossary.ipynb")]
+    assert {  # the course itself is untouched
+        path.relative_to(course): path.read_bytes()
+        for path in course.rglob("*")
+        if path.is_file() and "__pycache__" not in path.parts
+    } == committed
+
+
+@pytest.mark.parametrize(
+    ("arguments", "message"),
+    [
+        (["--src", "{course}", "--out", "{course}"], "a folder outside the course notebooks"),
+        (["--src", "{course}", "--out", "{course}/mine"], "a folder outside the course notebooks"),
+        (["--src", "{empty}", "--out", "{tmp}/mine"], "no course notebooks in"),
+    ],
+    ids=["the course itself", "inside the course", "no notebooks"],
+)
+def test_the_working_copy_refuses_the_course_folder_and_an_empty_one(
+    arguments: list[str], message: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    course, empty = tmp_path / "course", tmp_path / "empty"
+    course.mkdir()
+    (course / "01_a.ipynb").write_text("{}")
+    empty.mkdir()
+    filled = [a.format(course=course, empty=empty, tmp=tmp_path) for a in arguments]
+    assert cli.main(["notebooks", "copy", *filled]) == 1
+    err = capsys.readouterr().err
+    assert len(err.splitlines()) == 1 and message in err, err
+    assert sorted(p.name for p in course.iterdir()) == ["01_a.ipynb"]

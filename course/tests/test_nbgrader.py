@@ -14,28 +14,41 @@ Two parts.
   exported by ``nbgrader export`` (CSV) must be the points of the answers the test tables call
   correct, and each graded notebook must show the diagnosis the test table expects. This runs on
   the small course and on the real one (``notebooks/``) once its notebooks are in the exercise
-  form.
+  form. The README's whole cycle runs once more through nbgrader's exchange
+  (``release_assignment``, a student's ``fetch_assignment`` and ``submit``, ``collect``,
+  ``autograde``, ``generate_feedback``, ``release_feedback``, ``fetch_feedback``): no command
+  may print a warning but the one the README explains, the formgrader (JupyterLab started in
+  the course folder) lists each assignment's notebook alone, and the feedback page typesets its
+  mathematics in Chromium with every other host refused.
 """
 
 from __future__ import annotations
 
 import copy
 import csv
+import importlib.util
+import json
 import os
 import re
+import secrets
 import shutil
+import socket
 import subprocess
 import sys
+import tempfile
+import time
 import types
+import urllib.error
+import urllib.request
 from pathlib import Path
 from typing import Any
+from urllib.parse import urlsplit
 
 import nbformat
 import pytest
 
 from eulerlib_course import cli
 from eulerlib_course.exercises import Exercise, exercises
-from eulerlib_course.exercises.feedback import NOT_YET
 from eulerlib_course.nbgrader_edition import (
     CODE_STUB,
     CONFIG_NAME,
@@ -64,6 +77,9 @@ needs_nbgrader_run = pytest.mark.skipif(
 )
 
 CHECK = re.compile(r'check\("(\d\d\.\d)", (answer_\d)\)')
+#: The one warning left in an nbgrader run, which the README explains: ipykernel's, when
+#: autograde starts a kernel on the loopback interface.
+KERNEL_TCP = r"\[IPKernelApp\] WARNING \| Kernel is running over TCP without encryption"
 
 
 # --- a small course in the course's exercise form -------------------------------------------------
@@ -103,7 +119,7 @@ def small_notebook() -> Any:
             "%matplotlib inline\nimport numpy as np\n\nfrom eulerlib import matrix_to_euler\n"
             "from eulerlib_course import check, given"
         ),
-        md("At [gimbal lock](glossary.ipynb#gimbal-lock) the pitch is ±90°."),
+        md("At [gimbal lock](glossary.ipynb#gimbal-lock) the pitch is ±90°: $r_{31} = \\mp 1$."),
         code('samples = np.loadtxt("data/samples.csv", delimiter=",")\nprint(samples.shape)'),
         *exercise(
             "05.1",
@@ -210,14 +226,20 @@ def test_command_writes_one_assignment_per_notebook_with_what_it_uses(
         "nbgrader_config.py",
         f"source/{SMALL}/{SMALL}.ipynb",
         f"source/{SMALL}/data/samples.csv",
-        f"source/{SMALL}/glossary.ipynb",
+        f"source/{SMALL}/glossary.md",
     ]
     assert (out / "source" / SMALL / "data" / "samples.csv").read_text() == "1,2,3\n4,5,6\n"
     config = (out / CONFIG_NAME).read_text()
     assert f'c.ClearSolutions.code_stub = {{"python": "{CODE_STUB}"}}' in config.splitlines()
     compile(config, CONFIG_NAME, "exec")
-    glossary = read(out / "source" / SMALL / "glossary.ipynb")
-    assert all(grading(cell)["locked"] and not grading(cell)["grade"] for cell in glossary.cells)
+    # The glossary is a page, not a second notebook of the assignment, and the links go there.
+    glossary = (out / "source" / SMALL / "glossary.md").read_text(encoding="utf-8")
+    assert glossary == "# Glossary\n\n## Gimbal lock\n\nTwo axes of rotation line up.\n"
+    notebook = read(out / "source" / SMALL / f"{SMALL}.ipynb")
+    links = [c.source for c in notebook.cells if "glossary" in c.source]
+    assert links == [
+        "At [gimbal lock](glossary.md#gimbal-lock) the pitch is ±90°: $r_{31} = \\mp 1$."
+    ]
 
 
 def test_a_notebook_without_links_or_data_gets_no_companions(tmp_path: Path) -> None:
@@ -240,7 +262,8 @@ def test_each_exercise_becomes_an_answer_cell_and_a_hidden_test(small_course: Pa
     # Every cell that is not part of an exercise is kept as it is, read-only.
     kept = [c for c in course.cells if not {"exercise", "solution", "check"} & set(tags(c))]
     locked = [c for c in notebook.cells if grading(c)["locked"] and not grading(c)["grade"]]
-    assert [c.source for c in locked] == [c.source for c in kept]
+    glossary_page = [c.source.replace("glossary.ipynb", "glossary.md") for c in kept]
+    assert [c.source for c in locked] == glossary_page
     assert all(grading(c)["solution"] is False for c in locked)
     answers = [c for c in notebook.cells if grading(c)["grade_id"].startswith("answer-")]
     tests = [c for c in notebook.cells if grading(c)["grade"]]
@@ -283,7 +306,7 @@ def test_each_exercise_becomes_an_answer_cell_and_a_hidden_test(small_course: Pa
         assert visible == check
         assert hidden.endswith("\n### END HIDDEN TESTS")
         assert f'_answer_key.check("05.{k + 1}", answer_{k + 1})' in hidden
-        assert 'assert _feedback.status == "correct", str(_feedback)' in hidden
+        assert "raise AssertionError(str(_feedback))" in hidden
         assert grading(test)["locked"] and not grading(test)["solution"]
         assert "hide-input" not in tags(answer) and "jupyter" not in answer.metadata
     assert all(c.get("outputs", []) == [] for c in notebook.cells if c.cell_type == "code")
@@ -300,7 +323,9 @@ def test_the_edition_passes_nbgraders_own_metadata_check(small_course: Path) -> 
             validator.validate_cell(cell)
 
 
-def test_hidden_tests_grade_with_the_key_and_say_why(small_course: Path) -> None:
+def test_hidden_tests_grade_with_the_key_and_say_why(
+    small_course: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     """The hidden test of 05.1, run here on every answer of the exercise's test table and on
     ``...``, after the notebook's imports and the exercise's data, and with ``check`` redefined
     as a notebook might."""
@@ -315,15 +340,17 @@ def test_hidden_tests_grade_with_the_key_and_say_why(small_course: Path) -> None
     for example in KEY["05.1"].examples:
         exec(f"answer_1 = {example.code}", namespace)
         if example.status == "correct":
-            exec(hidden, namespace)  # passes
+            exec(hidden, namespace)  # passes, and says so
+            assert capsys.readouterr().out.startswith("Exercise 05.1 — correct: ")
         else:
             with pytest.raises(AssertionError) as failed:
                 exec(hidden, namespace)
             assert str(failed.value).startswith("Exercise 05.1 — off: "), example.code
             assert example.says in str(failed.value), example.code
-    exec("answer_1 = ...", namespace)
-    with pytest.raises(AssertionError, match=r"^Exercise 05\.1 — not yet"):
+    exec("answer_1 = ...", namespace)  # no answer: said so, not "replace the ... and run again"
+    with pytest.raises(AssertionError) as failed:
         exec(hidden, namespace)
+    assert str(failed.value) == "Exercise 05.1 — no answer: answer_1 was handed in as ..."
 
 
 @pytest.mark.parametrize(
@@ -492,7 +519,7 @@ def answer(exercise: Exercise, verdict: str, index: int) -> tuple[str | None, st
     an answer in the wrong form as its mistake, and its worked solution as its right answer
     (see :func:`grade_course`)."""
     if verdict == "not yet":
-        return None, "not yet", NOT_YET
+        return None, "no answer", f"answer_{exercise.id[-1]} was handed in as ..."
     if exercise.per_student is not None and verdict == "off":
         return f"answer_{exercise.id[-1]} = 'three numbers'", "off", "is text"
     if exercise.per_student is not None:
@@ -500,17 +527,19 @@ def answer(exercise: Exercise, verdict: str, index: int) -> tuple[str | None, st
     return row(exercise, verdict, index)
 
 
-def nbgrader(course: Path, *args: str) -> None:
+def nbgrader(course: Path, *args: str, **settings: str) -> str:
     """Run an nbgrader command in the course folder exactly as the README writes it: the
     environment's ``nbgrader`` script by its path, with the environment not on ``PATH`` (the
-    edition's configuration finds nbgrader's ``alembic`` itself)."""
+    edition's configuration finds nbgrader's ``alembic`` itself); ``settings`` are environment
+    variables (a student's ``USER``). Returns what it wrote to stdout and stderr, which must
+    hold no warning."""
     scripts = Path(sys.executable).parent
     path = [
         entry
         for entry in os.environ.get("PATH", "").split(os.pathsep)
         if entry and Path(entry).resolve() != scripts.resolve()
     ]
-    environment = dict(os.environ, PATH=os.pathsep.join(path))
+    environment = dict(os.environ, PATH=os.pathsep.join(path), **settings)
     environment.pop("VIRTUAL_ENV", None)
     result = subprocess.run(
         [str(scripts / "nbgrader"), *args],
@@ -521,6 +550,14 @@ def nbgrader(course: Path, *args: str) -> None:
         timeout=1800,
     )
     assert result.returncode == 0, f"nbgrader {' '.join(args)} failed:\n{result.stderr[-4000:]}"
+    said = result.stdout + result.stderr
+    alarms = [
+        line
+        for line in said.splitlines()
+        if re.search(r"WARNING|ERROR|Warning:", line) and not re.search(KERNEL_TCP, line)
+    ]
+    assert not alarms, f"nbgrader {' '.join(args)} warned:\n" + "\n".join(alarms)
+    return said
 
 
 def grade_course(
@@ -553,7 +590,12 @@ def grade_course(
         for key in keys:
             for text in key.forbidden:
                 assert text not in visible, f"{path.name}: the release gives away {text!r}"
-        copy_sources = [c.source for c in student_copy(read(path)).cells]
+        copy_sources = [  # with the glossary as a page
+            c.source.replace("glossary.ipynb", "glossary.md")
+            if c.cell_type == "markdown"
+            else c.source
+            for c in student_copy(read(path)).cells
+        ]
         released = [c.source.removesuffix(f"\n{CODE_STUB}") for c in release.cells]
         if graded:  # the visible checks check the form only, and the key is nowhere
             forms = [i for i, c in enumerate(released) if "check_form(" in c]
@@ -607,7 +649,7 @@ def grade_course(
         grades["reference", a]["score"] == grades["reference", a]["max_score"] for a in expected_max
     )
 
-    # Each graded test cell shows the key's verdict: nothing when correct, else the diagnosis.
+    # Each graded test cell shows the key's verdict: "correct" printed, else the diagnosis.
     for (student, assignment), verdicts in diagnoses.items():
         graded = read(course / "autograded" / student / assignment / f"{assignment}.ipynb")
         for cell in graded.cells:
@@ -620,6 +662,11 @@ def grade_course(
             where = f"{student}, {exercise_id}"
             if verdict == "correct":
                 assert not errors, f"{where}: {errors}"
+                printed = "".join(o.get("text", "") for o in cell.outputs)
+                assert printed.startswith(f"Exercise {exercise_id} — correct: "), where
+            elif verdict == "no answer":
+                assert [e.ename for e in errors] == ["AssertionError"], f"{where}: {errors}"
+                assert errors[0].evalue == f"Exercise {exercise_id} — no answer: {says}", where
             else:
                 assert [e.ename for e in errors] == ["AssertionError"], f"{where}: {errors}"
                 assert errors[0].evalue.startswith(f"Exercise {exercise_id} — {verdict}: "), where
@@ -672,3 +719,209 @@ def test_nbgrader_generates_autogrades_and_exports_the_course(
     if reason is not None:
         pytest.skip(f"the course is not in the exercise form yet: {reason}")
     grade_course(course_part(part, tmp_path / "course"), tmp_path / "grading", capsys)
+
+
+# --- the README's whole cycle: release, collect, feedback ----------------------------------------
+
+
+def chromium_executable() -> str | None:
+    """The system's Chromium, as the website's test finds it (``EULERLIB_CHROMIUM`` or PATH)."""
+    named = os.environ.get("EULERLIB_CHROMIUM")
+    if named:
+        return named if Path(named).is_file() else None
+    return shutil.which("chromium") or shutil.which("chromium-browser")
+
+
+#: Collected in a feedback page once MathJax has finished: its typeset formulas, TeX errors and
+#: the text outside them (where a ``$`` would be math left raw).
+MATH_FACTS = """async () => {
+  if (window.MathJax && window.MathJax.startup) { await window.MathJax.startup.promise; }
+  const copy = document.body.cloneNode(true);
+  copy.querySelectorAll("mjx-container, pre, code, script, style").forEach((e) => e.remove());
+  return {
+    typeset: document.querySelectorAll("mjx-container").length,
+    texErrors: [...document.querySelectorAll("mjx-merror")].map((e) => e.textContent),
+    text: copy.textContent,
+  };
+}"""
+
+
+def open_offline(page_path: Path) -> tuple[dict[str, Any], list[str], list[str]]:
+    """Open a local page in the system's Chromium (headless, a fresh profile) with every request
+    to another host refused: what :data:`MATH_FACTS` finds, the refused requests and the
+    console's errors."""
+    from playwright.sync_api import sync_playwright
+
+    refused: list[str] = []
+    errors: list[str] = []
+
+    def route(request_route: Any) -> None:
+        url = request_route.request.url
+        if url.startswith("file:") or urlsplit(url).hostname == "127.0.0.1":
+            request_route.continue_()
+        else:
+            refused.append(url)
+            request_route.abort()
+
+    arguments = ["--disable-background-networking", "--disable-component-update", "--no-first-run"]
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        arguments.append("--no-sandbox")  # Chromium refuses to run as root otherwise
+    with tempfile.TemporaryDirectory() as profile, sync_playwright() as playwright:
+        context = playwright.chromium.launch_persistent_context(
+            profile, executable_path=chromium_executable(), headless=True, args=arguments
+        )
+        try:
+            page = context.new_page()
+            page.route("**/*", route)
+            page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+            page.on("pageerror", lambda error: errors.append(str(error)))
+            page.goto(page_path.as_uri(), wait_until="load")
+            facts = page.evaluate(MATH_FACTS)
+        finally:
+            context.close()
+    return facts, refused, errors
+
+
+def browser_missing() -> str | None:
+    """Why a page cannot be opened in Chromium here, or None."""
+    if importlib.util.find_spec("playwright") is None:
+        return 'no Playwright: pip install -e "./course[site]"'
+    if chromium_executable() is None:
+        return "no Chromium: install Debian's chromium package, or name one in EULERLIB_CHROMIUM"
+    return None
+
+
+def formgrader_lists(course: Path, tmp_path: Path, assignment: str) -> tuple[list[str], list[str]]:
+    """Start JupyterLab in the course folder as the README says (the environment's ``jupyter``,
+    here headless on the loopback interface with a token and its own runtime and configuration
+    folders) and ask nbgrader's formgrader for the assignments and the notebooks of
+    ``assignment``, by name."""
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        port = int(probe.getsockname()[1])
+    token = secrets.token_hex(16)
+    command = [
+        str(Path(sys.executable).parent / "jupyter"),
+        "lab",
+        "--no-browser",
+        "--ServerApp.ip=127.0.0.1",
+        f"--ServerApp.port={port}",
+        "--ServerApp.port_retries=0",
+        f"--IdentityProvider.token={token}",
+    ]
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        command.append("--allow-root")
+    folders = {name: tmp_path / f"lab-{name}" for name in ("runtime", "config")}
+    for folder in folders.values():
+        folder.mkdir()
+    environment = dict(
+        os.environ,
+        JUPYTER_RUNTIME_DIR=str(folders["runtime"]),
+        JUPYTER_CONFIG_DIR=str(folders["config"]),
+    )
+    log_path = tmp_path / "lab.log"
+    with log_path.open("w") as log:
+        server = subprocess.Popen(
+            command, cwd=course, env=environment, stdout=log, stderr=subprocess.STDOUT
+        )
+        try:
+
+            def ask(route: str) -> Any:
+                request = urllib.request.Request(
+                    f"http://127.0.0.1:{port}/formgrader/api/{route}",
+                    headers={"Authorization": f"token {token}"},
+                )
+                with urllib.request.urlopen(request, timeout=60) as reply:
+                    return json.load(reply)
+
+            deadline = time.monotonic() + 120
+            while True:
+                try:
+                    assignments = ask("assignments")
+                    break
+                except (urllib.error.URLError, ConnectionError):
+                    if server.poll() is not None or time.monotonic() > deadline:
+                        log.flush()
+                        pytest.fail("JupyterLab did not start:\n" + log_path.read_text())
+                    time.sleep(0.5)
+            notebooks = ask(f"notebooks/{assignment}")
+        finally:
+            server.terminate()
+            try:
+                server.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                server.kill()
+    return [a["name"] for a in assignments], [n["name"] for n in notebooks]
+
+
+@needs_nbgrader_run
+def test_the_readme_cycle_release_collect_autograde_feedback(
+    small_course: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    """The README's cycle through nbgrader's exchange, as a teacher and a student run it: the
+    teacher releases, the student fetches, answers one exercise and submits, the teacher collects,
+    autogrades, writes and releases the feedback, the student fetches it. The feedback page
+    shows the right answer as correct, the blank ones as not handed in, and typesets its math in
+    Chromium with the network refused. The formgrader lists the notebook alone, not the
+    glossary."""
+    course, exchange, student = tmp_path / "grading", tmp_path / "exchange", tmp_path / "alice"
+    status, _, err = run_cli(
+        capsys, "notebooks", "nbgrader", "--src", str(small_course), "--out", str(course)
+    )
+    assert status == 0, err
+    exchange.mkdir()
+    exchange.chmod(0o777)  # a folder every user can write, as nbgrader's exchange must be
+    setting = f"c.Exchange.root = {str(exchange)!r}\n"  # as the README says to set it
+    with (course / CONFIG_NAME).open("a", encoding="utf-8") as config:
+        config.write(setting)
+    student.mkdir()
+    (student / CONFIG_NAME).write_text(
+        f"c = get_config()\n{setting}c.Exchange.cache = {str(tmp_path / 'cache')!r}\n",
+        encoding="utf-8",
+    )
+
+    nbgrader(course, "generate_assignment", SMALL)
+    nbgrader(course, "release_assignment", SMALL)
+    nbgrader(student, "fetch_assignment", SMALL, "--course", "eulerlib")
+    fetched = student / SMALL / f"{SMALL}.ipynb"
+    solution = dict(exercises_of(small_notebook()))["05.1"]
+    nbformat.write(fill_in(read(fetched), {"05.1": solution, "05.2": None, "05.3": None}), fetched)
+    nbgrader(student, "submit", SMALL, "--course", "eulerlib")  # as the user who runs the test
+    nbgrader(course, "collect", SMALL)
+    from nbgrader.utils import get_username
+
+    alice = get_username()  # the exchange knows a student by their login
+    assert (course / "submitted" / alice / SMALL / f"{SMALL}.ipynb").is_file()
+    nbgrader(course, "autograde", SMALL)
+    nbgrader(course, "generate_feedback", SMALL)
+    nbgrader(course, "release_feedback", SMALL)
+    nbgrader(student, "fetch_feedback", SMALL, "--course", "eulerlib")
+    nbgrader(course, "export", "--to", "grades.csv")
+
+    with (course / "grades.csv").open(newline="") as stream:
+        (grade,) = list(csv.DictReader(stream))
+    assert (grade["student_id"], float(grade["score"])) == (alice, POINTS[KEY["05.1"].level])
+
+    from nbgrader.api import Gradebook
+
+    with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gradebook:
+        listed = [notebook.name for notebook in gradebook.find_assignment(SMALL).notebooks]
+    assert listed == [SMALL]  # what the formgrader lists: no glossary
+    assert formgrader_lists(course, tmp_path, SMALL) == ([SMALL], [SMALL])
+
+    (page,) = (student / SMALL / "feedback").glob(f"*/{SMALL}.html")
+    text = page.read_text(encoding="utf-8")
+    assert "Exercise 05.1 — correct: " in text
+    assert "Exercise 05.2 — no answer: answer_2 was handed in as ..." in text
+    assert "replace the ..." not in text
+    assert "cdnjs" not in text and "mathjax/2.7" not in text.lower()
+
+    reason = browser_missing()
+    if reason is not None:
+        if os.environ.get("EULERLIB_SITE_TEST") == "required":
+            pytest.fail(reason)
+        pytest.skip(f"the feedback page is not opened in a browser: {reason}")
+    facts, refused, errors = open_offline(page)
+    assert refused == [] and errors == []
+    assert facts["typeset"] >= 1 and facts["texErrors"] == []
+    assert "r_{31}" not in facts["text"] and "$" not in facts["text"]

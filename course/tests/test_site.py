@@ -285,9 +285,9 @@ def test_table_of_contents_follows_the_notebooks_and_ends_with_the_glossary() ->
 def test_the_pages_show_the_readme_command_that_opens_jupyterlab() -> None:
     command = jupyterlab_command(README)
     assert command.startswith("python3 -m venv .venv") and command.endswith(
-        "jupyter lab notebooks/"
+        "eulerlib-course notebooks copy --out my-course/ && .venv/bin/jupyter lab my-course/"
     )
-    with pytest.raises(ValueError, match="no command that opens notebooks/"):
+    with pytest.raises(ValueError, match="no command that opens a copy of the course"):
         jupyterlab_command("# no commands here\n")
 
 
