@@ -1,0 +1,76 @@
+"""Edges of the numeric kernels and of the argument checks that other tests pass over.
+
+Each test here pins down a behaviour that a deliberate small change to the library (a mutant,
+see ``tests/mutation/README.md``) would alter while every other test still passed: which matrix
+a refusal names, which reason it gives, what happens at a scale or a size where two branches
+meet. The oracles are typed in (singular values of diagonal matrices, indices counted by hand),
+or SciPy's ``Rotation``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+from scipy.spatial.transform import Rotation
+
+from eulerlib import matrix_to_euler
+from eulerlib._blocks import BLOCK_SIZE
+
+# --- repairing a matrix that is too far from a rotation ---------------------------------------
+
+
+def stack_with(bad: np.ndarray, shape: tuple[int, ...], index: tuple[int, ...]) -> np.ndarray:
+    """Identity matrices of leading shape ``shape``, with ``bad`` at ``index``."""
+    R = np.broadcast_to(np.eye(3), (*shape, 3, 3)).copy()
+    R[index] = bad
+    return R
+
+
+def test_one_matrix_too_far_in_its_smallest_singular_value_only() -> None:
+    """Singular values (1, 1, 0.5): refused as too far, not as singular, for one matrix."""
+    with pytest.raises(ValueError, match="too far") as info:
+        matrix_to_euler(np.diag([1.0, 1.0, 0.5]), "ZYX", repair=True)
+    assert "singular (" not in str(info.value)
+    assert str(info.value).startswith("R ")
+
+
+@pytest.mark.parametrize(
+    ("shape", "index"), [((2, 3), (1, 2)), ((4,), (3,)), ((2, BLOCK_SIZE), (1, 1))]
+)
+def test_the_refusal_names_the_index_of_the_matrix(shape, index) -> None:
+    """The flat index is the block's offset plus the place in the block, as a tuple."""
+    R = stack_with(np.diag([1.0, 1.0, 0.5]), shape, index)
+    with pytest.raises(ValueError, match=rf"^R at index \({', '.join(map(str, index))},?\) "):
+        matrix_to_euler(R, "ZYX", repair=True)
+    R = stack_with(np.diag([1.0, 1.0, -1.0]), shape, index)  # nearest to a reflection
+    with pytest.raises(ValueError, match=rf"^R at index \({', '.join(map(str, index))},?\) "):
+        matrix_to_euler(R, "ZYX", repair=True)
+
+
+@pytest.mark.parametrize(
+    ("singular_values", "rank"),
+    [
+        ([1.0, 1.0, 0.0], 2),
+        ([100.0, 1.0, 1e-12], 2),  # 1e-12 ≤ 1e-12 · 100: singular, relative to the largest
+        ([1.0, 1e-13, 0.0], 1),  # 1e-13 < 1e-12 · 1: counted as zero
+        ([0.0, 0.0, 0.0], 0),
+    ],
+)
+def test_singular_matrices_are_refused_with_their_rank(singular_values, rank) -> None:
+    with pytest.raises(ValueError, match=rf"singular \(rank {rank}, singular values"):
+        matrix_to_euler(np.diag(singular_values), "ZYX", repair=True)
+
+
+@pytest.mark.parametrize("singular_values", [[1.0, 1.0, 0.5], [100.0, 1.0, 2e-10], [3.0, 1, 1]])
+def test_matrices_far_but_not_singular_are_refused_as_too_far(singular_values) -> None:
+    with pytest.raises(ValueError, match="too far") as info:
+        matrix_to_euler(np.diag(singular_values), "ZYX", repair=True)
+    assert "singular (" not in str(info.value)
+
+
+def test_repair_near_a_rotation_gives_the_rotation(rng) -> None:
+    R = Rotation.random(5, rng=rng).as_matrix()
+    noisy = R + 1e-9 * rng.normal(size=R.shape)
+    assert_allclose(matrix_to_euler(noisy, "ZYX", repair=True), matrix_to_euler(R, "ZYX"),
+                    rtol=0, atol=1e-8)  # fmt: skip
