@@ -9,13 +9,18 @@ or SciPy's ``Rotation``.
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import numpy as np
 import pytest
-from numpy.testing import assert_allclose
+from numpy.testing import assert_allclose, assert_array_equal
 from scipy.spatial.transform import Rotation
 
-from eulerlib import matrix_to_euler
+from eulerlib import euler_to_matrix, get_convention, matrix_to_euler
 from eulerlib._blocks import BLOCK_SIZE
+from eulerlib._euler_kernels import intrinsic_angles, lock_distance
+from eulerlib._trig import quarter_turns
+from eulerlib._validation import matrix_entries
 
 # --- repairing a matrix that is too far from a rotation ---------------------------------------
 
@@ -52,7 +57,10 @@ def test_the_refusal_names_the_index_of_the_matrix(shape, index) -> None:
     ("singular_values", "rank"),
     [
         ([1.0, 1.0, 0.0], 2),
+        ([1.0, 1.0, 1e-12], 2),  # exactly 1e-12 times the largest: still singular
         ([100.0, 1.0, 1e-12], 2),  # 1e-12 ≤ 1e-12 · 100: singular, relative to the largest
+        ([100.0, 1.0, 5e-12], 2),  # relative to the largest, not to the middle one
+        ([1e-3, 1e-3, 1e-16], 2),  # a small matrix: relative to its own largest value
         ([1.0, 1e-13, 0.0], 1),  # 1e-13 < 1e-12 · 1: counted as zero
         ([0.0, 0.0, 0.0], 0),
     ],
@@ -62,7 +70,17 @@ def test_singular_matrices_are_refused_with_their_rank(singular_values, rank) ->
         matrix_to_euler(np.diag(singular_values), "ZYX", repair=True)
 
 
-@pytest.mark.parametrize("singular_values", [[1.0, 1.0, 0.5], [100.0, 1.0, 2e-10], [3.0, 1, 1]])
+def test_the_refusal_lists_the_singular_values() -> None:
+    with pytest.raises(ValueError, match=r"singular values 2, 1, 0\)"):
+        matrix_to_euler(np.diag([1.0, 0.0, 2.0]), "ZYX", repair=True)
+    with pytest.raises(ValueError, match=r"singular values \(1, 1, 0.5\)"):
+        matrix_to_euler(np.diag([1.0, 0.5, 1.0]), "ZYX", repair=True)
+
+
+@pytest.mark.parametrize(
+    "singular_values",
+    [[1.0, 1.0, 0.5], [100.0, 1.0, 2e-10], [3.0, 1, 1], [1e-3, 1e-3, 1e-14]],
+)
 def test_matrices_far_but_not_singular_are_refused_as_too_far(singular_values) -> None:
     with pytest.raises(ValueError, match="too far") as info:
         matrix_to_euler(np.diag(singular_values), "ZYX", repair=True)
@@ -74,3 +92,34 @@ def test_repair_near_a_rotation_gives_the_rotation(rng) -> None:
     noisy = R + 1e-9 * rng.normal(size=R.shape)
     assert_allclose(matrix_to_euler(noisy, "ZYX", repair=True), matrix_to_euler(R, "ZYX"),
                     rtol=0, atol=1e-8)  # fmt: skip
+
+
+# --- lock at the boundary of the tolerance ----------------------------------------------------
+
+
+@pytest.mark.parametrize("seq", ["zxz", "xyz"])
+def test_a_distance_equal_to_the_tolerance_is_locked(seq) -> None:
+    """Exactly at lock the distance is exactly 0: locked with a tolerance of 0 as well."""
+    parsed = get_convention(seq).parsed
+    middle = 0.0 if parsed.proper else 90.0
+    entries = matrix_entries(euler_to_matrix([[10.0, middle, 20.0]], seq, degrees=True))
+    assert_array_equal(lock_distance(entries, parsed), [0.0])
+    for zero_first in (True, False):
+        _, locked = intrinsic_angles(entries, parsed, zero_first, 0.0)
+        assert_array_equal(locked, [True])
+
+
+# --- quarter turns in degrees -----------------------------------------------------------------
+
+
+def test_quarter_turns_leave_a_rest_of_at_most_45_degrees() -> None:
+    """``angle = k · 90° + r`` modulo 360° with ``|r| ≤ 45°``, as documented."""
+    angles = np.concatenate([np.arange(-720.0, 720.5, 0.5), [44.9, 45.4, 134.6, -45.4, 1e20]])
+    quarter, rest = quarter_turns(angles)
+    rest_degrees = np.degrees(rest)
+    assert np.all(np.abs(rest_degrees) <= 45.0 + 1e-12)
+    assert np.all((quarter == np.round(quarter)) & (np.abs(quarter) <= 4))
+    for angle, k, r in zip(angles, quarter, rest_degrees, strict=True):
+        # the exact remainder modulo 360, as a fraction
+        gap = (Fraction(float(angle)) - 90 * int(k) - Fraction(float(r))) % 360
+        assert min(gap, 360 - gap) <= 1e-9, angle
