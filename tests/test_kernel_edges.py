@@ -16,7 +16,14 @@ import pytest
 from numpy.testing import assert_allclose, assert_array_equal
 from scipy.spatial.transform import Rotation
 
-from eulerlib import euler_to_matrix, get_convention, matrix_to_euler
+from eulerlib import (
+    ALL_SEQUENCES,
+    GIMBAL_LOCK_TOLERANCE,
+    Convention,
+    euler_to_matrix,
+    get_convention,
+    matrix_to_euler,
+)
 from eulerlib._blocks import BLOCK_SIZE
 from eulerlib._euler_kernels import intrinsic_angles, lock_distance
 from eulerlib._trig import quarter_turns
@@ -123,3 +130,35 @@ def test_quarter_turns_leave_a_rest_of_at_most_45_degrees() -> None:
         # the exact remainder modulo 360, as a fraction
         gap = (Fraction(float(angle)) - 90 * int(k) - Fraction(float(r))) % 360
         assert min(gap, 360 - gap) <= 1e-9, angle
+
+
+# --- which angle gives way at lock, for every sequence ----------------------------------------
+
+
+def with_lock_zeroes(seq: str, which: str) -> Convention:
+    """The bare sequence as a convention whose ``which`` written angle is 0 at lock."""
+    return get_convention(seq)._replace(lock_zeroes=which)
+
+
+@pytest.mark.parametrize("which", ["first", "third"])
+@pytest.mark.parametrize("seq", ALL_SEQUENCES)
+def test_either_angle_may_give_way_away_from_lock_the_angles_are_scipys(seq, which, rng) -> None:
+    rotation = Rotation.random(200, rng=rng)
+    got = matrix_to_euler(rotation.as_matrix(), with_lock_zeroes(seq, which))
+    assert_allclose(got, rotation.as_euler(seq), rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("which", ["first", "third"])
+@pytest.mark.parametrize("seq", ALL_SEQUENCES)
+def test_either_angle_may_give_way_at_lock(seq, which, rng) -> None:
+    """At lock the chosen written angle is 0 and the three angles rebuild the matrix (SciPy)."""
+    proper = seq[0].lower() == seq[2].lower()
+    angles = rng.uniform(-3.0, 3.0, (6, 3))
+    d = GIMBAL_LOCK_TOLERANCE / 4  # near lock, within the tolerance
+    angles[:, 1] = [0.0, np.pi, 0.0, np.pi, d, np.pi - d] if proper else (
+        [np.pi / 2, -np.pi / 2, np.pi / 2, -np.pi / 2, np.pi / 2 - d, d - np.pi / 2]
+    )  # fmt: skip
+    R = Rotation.from_euler(seq, angles).as_matrix()
+    got = matrix_to_euler(R, with_lock_zeroes(seq, which), warn=False)
+    assert_array_equal(got[:, 0 if which == "first" else 2], 0.0)
+    assert_allclose(Rotation.from_euler(seq, got).as_matrix(), R, rtol=0, atol=1e-14)
