@@ -21,12 +21,16 @@ from eulerlib import (
     GIMBAL_LOCK_TOLERANCE,
     Convention,
     euler_to_matrix,
+    euler_to_quaternion,
     get_convention,
     matrix_to_euler,
+    rot_x,
+    rot_y,
+    rot_z,
 )
 from eulerlib._blocks import BLOCK_SIZE
 from eulerlib._euler_kernels import intrinsic_angles, lock_distance
-from eulerlib._trig import quarter_turns
+from eulerlib._trig import quarter_turns, sin_cos
 from eulerlib._validation import matrix_entries
 
 # --- repairing a matrix that is too far from a rotation ---------------------------------------
@@ -162,3 +166,35 @@ def test_either_angle_may_give_way_at_lock(seq, which, rng) -> None:
     got = matrix_to_euler(R, with_lock_zeroes(seq, which), warn=False)
     assert_array_equal(got[:, 0 if which == "first" else 2], 0.0)
     assert_allclose(Rotation.from_euler(seq, got).as_matrix(), R, rtol=0, atol=1e-14)
+
+
+# --- no negative zeros ------------------------------------------------------------------------
+
+RIGHT_ANGLES = np.array([0.0, 90.0, 180.0, 270.0, 360.0, 450.0, -90.0, -180.0, -270.0, -360.0])
+
+
+def assert_no_negative_zero(values: np.ndarray) -> None:
+    values = np.asarray(values)
+    assert not np.signbit(values[values == 0.0]).any()
+
+
+def test_sines_and_cosines_of_right_angles_have_no_negative_zeros() -> None:
+    s, c = sin_cos(RIGHT_ANGLES, degrees=True)
+    assert_array_equal(s, [0, 1, 0, -1, 0, 1, -1, 0, 1, 0])  # typed in
+    assert_array_equal(c, [1, 0, -1, 0, 1, 0, 0, -1, 0, 1])
+    assert_no_negative_zero(s)
+    assert_no_negative_zero(c)
+
+
+@pytest.mark.parametrize("function", [rot_x, rot_y, rot_z])
+def test_elementary_rotations_of_right_angles_have_no_negative_zeros(function) -> None:
+    assert_no_negative_zero(function(RIGHT_ANGLES, degrees=True))
+
+
+def test_quaternions_made_canonical_have_no_negative_zeros() -> None:
+    """270° about z is (−√½, 0, 0, √½) before the sign is chosen: its zeros stay +0."""
+    grid = np.array(np.meshgrid(RIGHT_ANGLES, RIGHT_ANGLES, [0.0, 90.0, 270.0])).reshape(3, -1).T
+    for seq in ("ZYX", "zxz", "XYZ"):
+        assert_no_negative_zero(euler_to_quaternion(grid, seq, degrees=True))
+    q = euler_to_quaternion([270.0, 0.0, 0.0], "ZYX", degrees=True)
+    assert_allclose(q, [0.0, 0.0, -np.sqrt(0.5), np.sqrt(0.5)], rtol=0, atol=1e-16)
