@@ -20,10 +20,12 @@ from eulerlib import (
     ALL_SEQUENCES,
     GIMBAL_LOCK_TOLERANCE,
     Convention,
+    axis_angle_to_matrix,
     euler_to_matrix,
     euler_to_quaternion,
     get_convention,
     matrix_to_euler,
+    quaternion_to_matrix,
     rot_x,
     rot_y,
     rot_z,
@@ -198,3 +200,31 @@ def test_quaternions_made_canonical_have_no_negative_zeros() -> None:
         assert_no_negative_zero(euler_to_quaternion(grid, seq, degrees=True))
     q = euler_to_quaternion([270.0, 0.0, 0.0], "ZYX", degrees=True)
     assert_allclose(q, [0.0, 0.0, -np.sqrt(0.5), np.sqrt(0.5)], rtol=0, atol=1e-16)
+
+
+def test_matrices_of_quaternions_with_zeros_have_no_negative_zeros() -> None:
+    """Every quaternion with components in {−1, 0, 1}: a product such as 0 · (−1) is −0.0."""
+    grid = np.array(np.meshgrid(*[[-1.0, 0.0, 1.0]] * 4)).reshape(4, -1).T
+    grid = grid[np.any(grid != 0.0, axis=1)]
+    R = quaternion_to_matrix(grid)
+    assert_no_negative_zero(R)
+    assert_allclose(R, Rotation.from_quat(grid).as_matrix(), rtol=0, atol=4e-16)
+
+
+# --- vectors of very different sizes in one block ---------------------------------------------
+
+
+def test_axes_and_quaternions_of_very_different_sizes_in_one_call() -> None:
+    """Each vector is scaled by its own power of two: a huge one next to a tiny one in the same
+    block changes neither (SciPy, on the same directions at ordinary size)."""
+    scales = np.array([2.0**1000, 1.0, 2.0**-1000, 2.0**-1070])[:, None]  # exact, subnormal last
+    axes = np.array([3.0, -1.0, 4.0]) * scales
+    angle = 0.75
+    expected = Rotation.from_rotvec(np.array([3.0, -1.0, 4.0]) / np.sqrt(26.0) * angle)
+    R = axis_angle_to_matrix(axes, angle)
+    assert_allclose(R, np.broadcast_to(expected.as_matrix(), R.shape), rtol=0, atol=4e-16)
+    q = np.concatenate([np.array([0.5, -0.5, 0.5, 0.5]) * scales[:3], [[0.0, 0.0, 5e-324, 0.0]]])
+    R = quaternion_to_matrix(q)
+    assert_allclose(R[:3], np.broadcast_to(Rotation.from_quat([0.5, -0.5, 0.5, 0.5])
+                    .as_matrix(), (3, 3, 3)), rtol=0, atol=4e-16)  # fmt: skip
+    assert_allclose(R[3], np.diag([-1.0, -1.0, 1.0]), rtol=0, atol=0)  # a half turn about z
