@@ -9,6 +9,7 @@ or SciPy's ``Rotation``.
 
 from __future__ import annotations
 
+import warnings
 from fractions import Fraction
 
 import numpy as np
@@ -25,10 +26,12 @@ from eulerlib import (
     euler_to_quaternion,
     get_convention,
     matrix_to_euler,
+    matrix_to_rotvec,
     quaternion_to_matrix,
     rot_x,
     rot_y,
     rot_z,
+    rotvec_to_matrix,
 )
 from eulerlib._blocks import BLOCK_SIZE
 from eulerlib._euler_kernels import intrinsic_angles, lock_distance
@@ -228,3 +231,31 @@ def test_axes_and_quaternions_of_very_different_sizes_in_one_call() -> None:
     assert_allclose(R[:3], np.broadcast_to(Rotation.from_quat([0.5, -0.5, 0.5, 0.5])
                     .as_matrix(), (3, 3, 3)), rtol=0, atol=4e-16)  # fmt: skip
     assert_allclose(R[3], np.diag([-1.0, -1.0, 1.0]), rtol=0, atol=0)  # a half turn about z
+
+
+def test_huge_vectors_give_no_overflow_warning() -> None:
+    """The squares of a huge vector overflow on the way; that is handled, not reported."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        R = axis_angle_to_matrix([3e300, 0.0, 4e300], 0.5)
+        v = matrix_to_rotvec(rotvec_to_matrix([0.0, 0.0, 1e200], degrees=True), degrees=True)
+        q = quaternion_to_matrix([1e300, 1e300, 0.0, 0.0])
+    expected = Rotation.from_rotvec(np.array([0.6, 0.0, 0.8]) * 0.5).as_matrix()
+    assert_allclose(R, expected, rtol=0, atol=4e-16)
+    turn = float(Fraction(1e200) % 360)  # exact, then into (-180, 180]
+    assert_allclose(v, [0.0, 0.0, turn - 360.0 if turn > 180.0 else turn], rtol=0, atol=1e-12)
+    assert_allclose(q, Rotation.from_quat([1.0, 1.0, 0.0, 0.0]).as_matrix(), rtol=0, atol=4e-16)
+
+
+# --- broadcasting across several blocks -------------------------------------------------------
+
+
+def test_broadcast_operands_are_gathered_right_in_every_block(rng) -> None:
+    """A (2, 1) operand against an (n,) one, with 2 n results over several blocks."""
+    n = BLOCK_SIZE + 7
+    axes = rng.normal(size=(2, 1, 3))
+    angles = rng.uniform(-3.0, 3.0, n)
+    R = axis_angle_to_matrix(axes, angles)
+    unit = axes / np.linalg.norm(axes, axis=-1, keepdims=True)
+    expected = Rotation.from_rotvec((unit * angles[:, None]).reshape(-1, 3)).as_matrix()
+    assert np.abs(R - expected.reshape(2, n, 3, 3)).max() <= 8e-16
