@@ -21,6 +21,7 @@ from eulerlib import (
     ALL_SEQUENCES,
     GIMBAL_LOCK_TOLERANCE,
     Convention,
+    angle_between,
     axis_angle_to_matrix,
     euler_to_matrix,
     euler_to_quaternion,
@@ -32,6 +33,7 @@ from eulerlib import (
     rot_y,
     rot_z,
     rotvec_to_matrix,
+    slerp,
 )
 from eulerlib._blocks import BLOCK_SIZE
 from eulerlib._euler_kernels import intrinsic_angles, lock_distance
@@ -259,3 +261,43 @@ def test_broadcast_operands_are_gathered_right_in_every_block(rng) -> None:
     unit = axes / np.linalg.norm(axes, axis=-1, keepdims=True)
     expected = Rotation.from_rotvec((unit * angles[:, None]).reshape(-1, 3)).as_matrix()
     assert np.abs(R - expected.reshape(2, n, 3, 3)).max() <= 8e-16
+
+
+# --- repairing stacks of matrices, and what the rotation check looks at -----------------------
+
+
+def test_repair_of_a_stack_repairs_every_matrix(rng) -> None:
+    """Six drifted matrices in a (2, 3) stack: each is replaced by its nearest rotation."""
+    A = Rotation.random(6, rng=rng).as_matrix().reshape(2, 3, 3, 3)
+    B = Rotation.random(6, rng=rng).as_matrix().reshape(2, 3, 3, 3)
+    drift = 1e-7 * rng.normal(size=(2, 2, 3, 3, 3))
+    expected = angle_between(A, B)
+    assert_allclose(angle_between(A + drift[0], B + drift[1], repair=True), expected, atol=1e-6)
+    halfway = slerp(A + drift[0], B + drift[1], 0.5, repair=True)
+    assert_allclose(halfway, slerp(A, B, 0.5), rtol=0, atol=1e-6)
+
+
+def test_repair_of_a_stack_names_the_index_of_a_refused_matrix() -> None:
+    B = np.broadcast_to(np.eye(3), (2, 3, 3, 3))
+    A = stack_with(np.diag([1.0, 1.0, 0.5]), (2, 3), (1, 2))
+    with pytest.raises(ValueError, match=r"^R0 at index \(1, 2\) "):
+        angle_between(A, B, repair=True)
+    with pytest.raises(ValueError, match=r"^R1 at index \(1, 2\) "):
+        slerp(B, A, 0.5, repair=True)
+
+
+@pytest.mark.parametrize(
+    "R",
+    [
+        np.diag([1.0, 1.001, 1 / 1.001]),  # rows 1 and 2 not unit, determinant 1
+        np.diag([1 / 1.001, 1.0, 1.001]),
+        # rows 0 and 2 at 89.94° from each other, all rows unit, determinant 1 − 5e-7
+        np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [np.sin(1e-3), 0.0, np.cos(1e-3)]]),
+        np.array([[1.0, 0.0, 0.0], [np.sin(1e-3), np.cos(1e-3), 0.0], [0.0, 0.0, 1.0]]),
+        np.array([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, np.sin(1e-3), np.cos(1e-3)]]),
+    ],
+)
+def test_every_row_and_every_pair_of_rows_is_checked(R) -> None:
+    """Not a rotation by 1e-3 in one place only; the determinant alone would pass it."""
+    with pytest.raises(ValueError, match=r"^R is not a rotation matrix: max \|R Rᵀ − I\| = 0.00"):
+        matrix_to_euler(R, "ZYX", atol=1e-5)
