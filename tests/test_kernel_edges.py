@@ -301,3 +301,23 @@ def test_every_row_and_every_pair_of_rows_is_checked(R) -> None:
     """Not a rotation by 1e-3 in one place only; the determinant alone would pass it."""
     with pytest.raises(ValueError, match=r"^R is not a rotation matrix: max \|R Rᵀ − I\| = 0.00"):
         matrix_to_euler(R, "ZYX", atol=1e-5)
+
+
+def test_a_singular_matrix_is_not_called_a_reflection() -> None:
+    """Determinant exactly 0: refused as not a rotation, not as a reflection (det < 0)."""
+    for R in (np.zeros((3, 3)), np.diag([1.0, 1.0, 0.0])):
+        with pytest.raises(ValueError, match=r"^R is not a rotation matrix"):
+            matrix_to_euler(R, "ZYX")
+
+
+def test_a_large_tolerance_still_checks_the_determinant() -> None:
+    """1.125 I: max |R Rᵀ − I| = 0.265625 and det − 1 = 0.423828125, both exact."""
+    R = stack_with(1.125 * np.eye(3), (2, 2), (0, 1))
+    R[1, 0] = 1.125 * np.eye(3)
+    with pytest.raises(ValueError, match=r"^R at index \(0, 1\) has determinant 1.42383, not 1"):
+        matrix_to_euler(R, "ZYX", atol=0.3)
+    # a deviation equal to the tolerance is within it, for both checks
+    matrix_to_euler(R, "ZYX", atol=0.423828125, warn=False)
+    matrix_to_euler(np.diag([1.125, 1.0, 0.875]), "ZYX", atol=0.265625)
+    with pytest.raises(ValueError, match=r"^R is not a rotation matrix"):
+        matrix_to_euler(np.diag([1.125, 1.0, 0.875]), "ZYX", atol=0.265624)
