@@ -321,3 +321,28 @@ def test_a_large_tolerance_still_checks_the_determinant() -> None:
     matrix_to_euler(np.diag([1.125, 1.0, 0.875]), "ZYX", atol=0.265625)
     with pytest.raises(ValueError, match=r"^R is not a rotation matrix"):
         matrix_to_euler(np.diag([1.125, 1.0, 0.875]), "ZYX", atol=0.265624)
+
+
+# --- finiteness of large inputs ---------------------------------------------------------------
+
+
+@pytest.mark.parametrize("flat_index", [0, 65535, 65536, 65537, 3 * 65536 + 5, 4 * 65536 - 1])
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+def test_the_first_bad_number_of_a_large_input_is_found(flat_index, bad) -> None:
+    """The search runs in blocks of 65536 numbers: a bad one is found in any of them."""
+    angles = np.zeros((65536 + 22000, 3))
+    angles.reshape(-1)[flat_index] = bad
+    later = min(flat_index + 70000, angles.size - 1)
+    if later != flat_index:
+        angles.reshape(-1)[later] = np.nan  # only the first one is named
+    row, column = divmod(flat_index, 3)
+    with pytest.raises(ValueError, match=rf"^angles must be finite, got .* at index \({row}, "
+                       rf"{column}\)$"):  # fmt: skip
+        euler_to_matrix(angles, "ZYX")
+
+
+def test_finite_numbers_whose_sum_overflows_are_finite() -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        R = euler_to_matrix([[1.7e308, 1.7e308, 1.7e308], [-1.7e308, 0.0, 1.7e308]], "ZYX")
+    assert np.all(np.isfinite(R))
