@@ -346,3 +346,26 @@ def test_finite_numbers_whose_sum_overflows_are_finite() -> None:
         warnings.simplefilter("error")
         R = euler_to_matrix([[1.7e308, 1.7e308, 1.7e308], [-1.7e308, 0.0, 1.7e308]], "ZYX")
     assert np.all(np.isfinite(R))
+
+
+# --- the keywords of the rotation check are named when wrong ----------------------------------
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda **kw: matrix_to_euler(np.eye(3), "ZYX", **kw),
+        lambda **kw: angle_between(np.eye(3), np.eye(3), **kw),
+        lambda **kw: slerp(np.eye(3), np.eye(3), 0.5, **kw),
+    ],
+)
+def test_each_keyword_of_the_rotation_check_is_named(call) -> None:
+    for keyword in ("validate", "repair"):
+        with pytest.raises(
+            TypeError, match=rf"^{keyword} must be True or False, got 'yes' \(str\)$"
+        ):
+            call(**{keyword: "yes"})
+    with pytest.raises(TypeError, match=r"^atol must be a real number, got 'small' \(str\)$"):
+        call(atol="small")
+    with pytest.raises(ValueError, match=r"^atol must be a finite number ≥ 0, got -1e-09$"):
+        call(atol=-1e-9)
