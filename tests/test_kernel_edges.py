@@ -369,3 +369,12 @@ def test_each_keyword_of_the_rotation_check_is_named(call) -> None:
         call(atol="small")
     with pytest.raises(ValueError, match=r"^atol must be a finite number ≥ 0, got -1e-09$"):
         call(atol=-1e-9)
+
+
+def test_a_tolerance_may_be_a_0d_array_but_not_a_longer_one() -> None:
+    R = np.eye(3)
+    for atol in (np.array(1e-6), np.array(0), np.float32(1e-6), np.int64(0)):
+        assert_array_equal(matrix_to_euler(R, "ZYX", atol=atol, warn=False), [0.0, 0.0, 0.0])
+    for atol in (np.array([1e-6]), np.array([[0.0]])):
+        with pytest.raises(TypeError, match=r"^atol must be a real number, got array"):
+            matrix_to_euler(R, "ZYX", atol=atol)
