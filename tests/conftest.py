@@ -29,6 +29,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import Phase, settings
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -43,11 +44,23 @@ IGNORED_DIRS = frozenset(
         ".mypy_cache",
         ".ruff_cache",
         ".hypothesis",
+        "mutants",  # the working copy of mutation testing (tests/mutation/README.md)
     }
 )
 
 #: Default of the ``notebook_max_seconds`` setting (see the module docstring).
 NOTEBOOK_MAX_SECONDS = 20.0
+
+# Mutation testing (tests/mutation/README.md) runs the tests once per mutant with
+# ``--hypothesis-profile=mutation``: the same examples every time, and a failing test stops at
+# its first failing example instead of shrinking it, which can take seconds.
+settings.register_profile(
+    "mutation",
+    derandomize=True,
+    database=None,
+    phases=(Phase.explicit, Phase.generate),
+    deadline=None,
+)
 
 #: Seed of the ``rng`` fixture, for tests that draw the same numbers once for many cases.
 SEED = 20150214

@@ -137,12 +137,21 @@ def test_huge_angles(angle: float, degrees: bool, rng) -> None:
     for _ in range(5):
         axis = rng.normal(size=3)
         exact = mp.matrix_of_axis_angle(mp.mp_vector(axis), mp.radians_of(angle, degrees))
-        assert mp.absolute_ulps(axis_angle_to_matrix(axis, angle, degrees=degrees), exact) <= 3.0
-        v = axis / np.linalg.norm(axis) * abs(angle)  # |v| is exact only along an axis
+        R = axis_angle_to_matrix(axis, angle, degrees=degrees)
+        assert mp.absolute_ulps(R, exact) <= 3.0
+        # the rotation vector of the turn, typed in: the angle reduced to [-π, π] times the
+        # unit axis (a negative reduced angle turns the axis around)
+        with mpmath.workdps(mp.DIGITS):
+            turn = mp.radians_of(angle, degrees)
+            reduced = turn - 2 * mpmath.pi * mpmath.nint(turn / (2 * mpmath.pi))
+            exact_v = [reduced * c for c in mp.unit(mp.mp_vector(axis))]
+            exact_degrees = [c / mpmath.pi for c in exact_v]
+        assert mp.absolute_ulps(matrix_to_rotvec(R), exact_v) <= 16.0
+        in_degrees = matrix_to_rotvec(R, degrees=True)
+        assert mp.absolute_ulps(in_degrees / 180.0, exact_degrees) <= 16.0
     along = np.array([0.0, abs(angle), 0.0])
     exact = mp.matrix_of_axis_angle(mp.mp_vector([0, 1, 0]), mp.radians_of(abs(angle), degrees))
     assert mp.absolute_ulps(rotvec_to_matrix(along, degrees=degrees), exact) <= 3.0
-    del v
 
 
 @pytest.mark.parametrize("scale", [5e-324, 1e-300, 1e-150, 1.0, 1e150, 1e300])

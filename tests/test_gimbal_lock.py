@@ -262,6 +262,20 @@ def test_status_locked_flag_and_tolerance(rng):
     assert_array_equal(locked, [True, True, True, False])  # 1e-4 rad is 0.0057°
 
 
+@pytest.mark.parametrize("seq", ["ZYX", "zxz"])
+def test_status_tolerance_in_degrees_is_read_in_degrees(seq, rng):
+    """Half a degree from lock: locked within 1°, not within 0.1°, whatever 0.1 rad would say."""
+    lock = 0.0 if is_proper(seq) else np.pi / 2
+    R = scipy_matrices(seq, np.array([lock - np.radians(0.5)]), rng)
+    locked, distance = gimbal_lock_status(R, seq, degrees=True, tolerance=1.0)
+    assert_allclose(distance, [0.5], rtol=1e-9)
+    assert_array_equal(locked, [True])
+    locked, _ = gimbal_lock_status(R, seq, degrees=True, tolerance=0.1)
+    assert_array_equal(locked, [False])  # 0.5° is 0.0087 rad, under 0.1 rad
+    locked, _ = gimbal_lock_status(R, seq, tolerance=0.1)
+    assert_array_equal(locked, [True])  # the same number in radians
+
+
 def test_status_shapes(rng):
     R = Rotation.random(6, rng=rng).as_matrix().reshape(2, 3, 3, 3)
     status = gimbal_lock_status(R, "zxz")

@@ -90,8 +90,10 @@ def test_frame_is_body_or_space_in_any_case(call: Callable[..., Any]) -> None:
     assert_array_equal(call(frame=" SPACE "), call(frame="space"))
     with pytest.raises(ValueError, match=r"^frame must be 'body' or 'space', got 'world'$"):
         call(frame="world")
-    for bad in (None, 1, True, ["body"]):
-        with pytest.raises(TypeError, match=r"^frame must be 'body' or 'space' \(a string\)"):
+    for bad, kind in ((None, "NoneType"), (1, "int"), (True, "bool"), (["body"], "list")):
+        with pytest.raises(
+            TypeError, match=rf"^frame must be 'body' or 'space' \(a string\), got {kind}$"
+        ):
             call(frame=bad)
 
 

@@ -123,6 +123,49 @@ def test_half_turns_are_canonical_as_in_scipy(axis: list[int]) -> None:
         assert_allclose(matrix_to_quaternion(quaternion_to_matrix(q)), ours, atol=2 * EPS)
 
 
+HALF = np.sqrt(0.5)
+
+
+@pytest.mark.parametrize(
+    ("seq", "angles", "expected"),
+    [
+        # R_z(0) R_y(180°) R_x(180°) = R_z(180°): the product of the elementary quaternions is
+        # (0, 0, 0, −1); canonical (0, 0, 0, 1), the first nonzero being z
+        ("ZYX", [0.0, 180.0, 180.0], [0.0, 0.0, 0.0, 1.0]),
+        ("ZYX", [0.0, -180.0, -180.0], [0.0, 0.0, 0.0, 1.0]),
+        # R_z(90°) R_y(180°): (c, 0, 0, s)(0, 0, 1, 0) = (0, −s, c, 0) with c = s = √½, already
+        # canonical when flipped: x < 0 before, x > 0 after
+        ("ZYX", [90.0, 180.0, 0.0], [0.0, HALF, -HALF, 0.0]),
+        # R_y(180°) R_x(−90°): (0, 0, 1, 0)(c, −s, 0, 0) = (0, 0, c, s), and its negative
+        # (0, 0, −c, −s) from the angles −180°: x = 0, the first nonzero is y
+        ("ZYX", [0.0, 180.0, -90.0], [0.0, 0.0, HALF, HALF]),
+        ("ZYX", [0.0, -180.0, -90.0], [0.0, 0.0, HALF, HALF]),
+    ],
+)
+def test_half_turns_from_euler_angles_are_canonical(seq, angles, expected) -> None:
+    """At w = 0 the sign of w says nothing: the first nonzero of x, y, z is made positive."""
+    ours = euler_to_quaternion(np.array(angles), seq, degrees=True)  # (x, y, z, w)
+    assert_allclose(scalar_first(ours), expected, rtol=0, atol=2 * EPS)
+    assert ours[3] == 0.0
+
+
+@pytest.mark.parametrize("seq", ALL_SEQUENCES)
+def test_every_half_turn_of_right_angles_is_canonical(seq) -> None:
+    """All Euler angles from {0°, ±90°, ±180°} whose rotation is a half turn; the canonical
+    quaternion is derived from SciPy's: its w set to 0, the first nonzero of x, y, z made > 0."""
+    grid = np.array(np.meshgrid(*[[0.0, 90.0, -90.0, 180.0, -180.0]] * 3)).reshape(3, -1).T
+    theirs = Rotation.from_euler(seq, grid, degrees=True).as_quat()  # (x, y, z, w)
+    half_turn = np.abs(theirs[:, 3]) < 1e-12
+    grid, theirs = grid[half_turn], theirs[half_turn]
+    theirs[:, 3] = 0.0
+    for row in theirs:
+        first = row[np.flatnonzero(np.abs(row[:3]) > 1e-12)[0]]
+        row *= np.sign(first)
+    ours = euler_to_quaternion(grid, seq, degrees=True)
+    assert_allclose(ours, theirs, rtol=0, atol=4 * EPS)
+    assert np.all(ours[:, 3] == 0.0)
+
+
 def test_no_negative_zeros() -> None:
     q = matrix_to_quaternion(np.diag([1.0, -1.0, -1.0]))
     assert not np.signbit(q).any()
