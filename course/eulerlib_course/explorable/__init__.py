@@ -486,21 +486,19 @@ class Explorable(anywidget.AnyWidget):  # type: ignore[misc]
         name = _convention_name(seq)
         times = np.linspace(0.0, 1.0, steps).tolist()
         config = {"kind": "paths", "seq": name, "start": first, "end": last, "times": times}
+        moments = np.array(times)
+        by_angles = euler_to_matrix(
+            np.outer(1 - moments, first) + np.outer(moments, last), name, degrees=True
+        )
+        by_slerp = eulerlib.slerp(
+            euler_to_matrix(first, name, degrees=True),
+            euler_to_matrix(last, name, degrees=True),
+            moments,
+        )
+        # the noses' paths, for drawing only: rounded, so that the stored output is the same
+        # wherever it is computed
         config["trails"] = [
-            [
-                np.asarray(matrix)[:, 0].tolist()
-                for matrix in euler_to_matrix(
-                    np.outer(1 - np.array(times), first) + np.outer(times, last), name, degrees=True
-                )
-            ],
-            [
-                np.asarray(matrix)[:, 0].tolist()
-                for matrix in eulerlib.slerp(
-                    euler_to_matrix(first, name, degrees=True),
-                    euler_to_matrix(last, name, degrees=True),
-                    np.array(times),
-                )
-            ],
+            (np.round(path[:, :, 0], 6) + 0.0).tolist() for path in (by_angles, by_slerp)
         ]
         return cls(name, first, _config=config)
 
@@ -557,7 +555,7 @@ class Explorable(anywidget.AnyWidget):  # type: ignore[misc]
             "label": label,
             "matrices": (stack + 0.0).tolist(),
             "times": moments.tolist(),
-            "trails": [stack[:, :, 0].tolist()],
+            "trails": [(np.round(stack[:, :, 0], 6) + 0.0).tolist()],
         }
         first = matrix_to_euler(stack[0], name, degrees=True, warn=False)
         return cls(name, first, _config=config)
@@ -606,11 +604,14 @@ class Explorable(anywidget.AnyWidget):  # type: ignore[misc]
         from eulerlib.plotting import draw_aircraft, draw_frame, new_3d_axes, plot_gimbal
 
         bodies = self.state["tracks"]
-        fig = Figure(figsize=(3.6 * len(bodies) + 4.4, 3.8))
-        width = 3.6 / (3.6 * len(bodies) + 4.4)
+        text = self._text()
+        lines = text.count("\n") + 1
+        width, height = 4.0 * len(bodies) + 0.4, 3.9 + 0.17 * lines + 0.4
+        fig = Figure(figsize=(width, height))
         for k, body in enumerate(bodies):
-            ax = new_3d_axes(fig, (1, len(bodies) + 1, k + 1), title=body["label"])
-            ax.set_position((0.01 + k * width, 0.08, width * 0.98, 0.84))
+            ax = new_3d_axes(fig, (1, len(bodies), k + 1), title=body["label"])
+            bottom = (0.17 * lines + 0.45) / height
+            ax.set_position((k / len(bodies), bottom, 1 / len(bodies), 3.4 / height))
             R = np.array(body["matrix"])
             plot_gimbal(body["rings"], body["seq"], degrees=True, ax=ax)
             draw_frame(ax, None, linestyle="--", alpha=0.45, linewidth=1.2)
@@ -618,11 +619,8 @@ class Explorable(anywidget.AnyWidget):  # type: ignore[misc]
             legend = ax.get_legend()
             if legend is not None:
                 legend.remove()
-        fig.text(
-            len(bodies) * width + 0.02, 0.55, self._text(), family="monospace", fontsize=8,
-            va="center",
-        )  # fmt: skip
-        fig.text(0.5, 0.02, RUN_SENTENCE, ha="center", fontsize=10, style="italic")
+        fig.text(0.03, 0.4 / height, text, family="monospace", fontsize=8.5, va="bottom")
+        fig.text(0.5, 0.1 / height, RUN_SENTENCE, ha="center", fontsize=10, style="italic")
         buffer = io.BytesIO()
         fig.savefig(buffer, format="png", dpi=PICTURE_DPI, metadata={"Software": None})
         return buffer.getvalue()
