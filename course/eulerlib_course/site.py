@@ -18,9 +18,9 @@ source.
   opens the course in JupyterLab; worked solutions are folded behind a "Show the worked
   solution" button; an explorable (:mod:`eulerlib_course.explorable`) becomes live, computed
   in the page by its JavaScript port, with its stored picture for a browser without
-  JavaScript (:func:`live_explorables`); another widget shows the picture stored next to it, with a sentence on running
-  it live, and the widgets' saved state is dropped so that no widget JavaScript is fetched; an
-  animation's player takes its icons from the theme's own Font Awesome instead of a CDN;
+  JavaScript (:func:`live_explorables`); another widget shows the picture stored next to it,
+  with a sentence on running it live, and the widgets' saved state is dropped so that no
+  widget JavaScript is fetched; an animation's player takes its icons from the theme's own Font Awesome instead of a CDN;
 * it copies the explorables' ES modules into the site (:func:`copy_explorable_modules`);
 * it runs Sphinx, with MathJax 3 copied into the site from the ``sphinx-mathjax-offline``
   package, and copies the HTML into the output folder, replacing a site built there before.
@@ -53,8 +53,8 @@ from eulerlib_course.student import SOLUTION_TAG, student_copy
 __all__ = [
     "SiteBuild",
     "build_site",
-    "course_pages",
     "copy_explorable_modules",
+    "course_pages",
     "jupyterlab_command",
     "live_explorables",
     "prepare_notebook",
