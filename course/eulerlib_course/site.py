@@ -20,7 +20,8 @@ source.
   in the page by its JavaScript port, with its stored picture for a browser without
   JavaScript (:func:`live_explorables`); another widget shows the picture stored next to it,
   with a sentence on running it live, and the widgets' saved state is dropped so that no
-  widget JavaScript is fetched; an animation's player takes its icons from the theme's own Font Awesome instead of a CDN;
+  widget JavaScript is fetched; an animation's player takes its icons from the theme's own
+  Font Awesome instead of a CDN;
 * it copies the explorables' ES modules into the site (:func:`copy_explorable_modules`);
 * it runs Sphinx, with MathJax 3 copied into the site from the ``sphinx-mathjax-offline``
   package, and copies the HTML into the output folder, replacing a site built there before.
