@@ -41,6 +41,7 @@ import html
 import io
 import json
 import math
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, NamedTuple
 
@@ -142,12 +143,14 @@ def _angle_triple(angles: ArrayLike, name: str = "angles") -> NDArray[np.float64
         raise TypeError(f"{name} must be three numbers, got a masked array")
     if isinstance(angles, (str, bytes)) or angles is None:
         raise TypeError(f"{name} must be three numbers, got {type(angles).__name__}")
-    try:
-        values = np.array(angles, dtype=float)
-    except (TypeError, ValueError):
-        raise TypeError(f"{name} must be three numbers, got {angles!r}") from None
-    if np.asarray(angles).dtype == bool:
-        raise TypeError(f"{name} must be three numbers, not booleans")
+    items = np.asarray(angles, dtype=object).ravel()
+    if not all(
+        isinstance(item, (int, float, np.integer, np.floating))
+        and not isinstance(item, (bool, np.bool_))
+        for item in items
+    ):
+        raise TypeError(f"{name} must be three numbers, got {angles!r}")
+    values = np.array(angles, dtype=float)
     if values.shape != (3,):
         raise ValueError(f"{name} must be three numbers, got shape {values.shape}")
     if not np.all(np.isfinite(values)):
@@ -370,7 +373,7 @@ def compute_state(config: dict[str, Any], controls: dict[str, Any]) -> dict[str,
     }
 
 
-class Explorable(anywidget.AnyWidget):  # type: ignore[misc]
+class Explorable(anywidget.AnyWidget):
     """A 3D explorable of Euler angles: turn the view with the mouse, set the angles below.
 
     Display it as the last expression of a cell. In JupyterLab with a kernel every change of a
@@ -427,7 +430,7 @@ class Explorable(anywidget.AnyWidget):  # type: ignore[misc]
         seq: str = "rose",
         angles: ArrayLike = INITIAL_ANGLES,
         *,
-        compare: tuple[str, ...] | list[str] = (),
+        compare: Sequence[str] = (),
         quaternion: bool = False,
         _config: dict[str, Any] | None = None,
     ) -> None:
