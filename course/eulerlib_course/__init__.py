@@ -23,8 +23,8 @@ the library (never the other way round). ``pip install -e ./course`` installs it
 notebooks and most commands need (the library's ``symbolic`` and ``plot`` extras, JupyterLab,
 widgets, nbformat, nbclient, nbconvert); its ``teach`` extra (nbgrader) and ``site`` extra
 (Jupyter Book) add what the edition and the website need. Importing this package loads none of
-the tools; it offers the two names a notebook's exercises use, and :mod:`~eulerlib_course.explorable`
-the notebooks' explorables:
+the tools; it offers the two names a notebook's exercises use, and
+:mod:`~eulerlib_course.explorable` the notebooks' explorables:
 
 >>> from eulerlib_course import check, given
 """

@@ -178,8 +178,8 @@ def test_the_controls_recompute_the_state() -> None:
             eulerlib.euler_to_matrix(compared["angles"], other, degrees=True), R, atol=1e-14
         )
     q = np.array(first["quaternion"]["q"])
-    np.testing.assert_allclose(q, Rotation.from_matrix(R).as_quat(scalar_first=True, canonical=True),
-                               atol=1e-15)  # fmt: skip
+    scipy_q = Rotation.from_matrix(R).as_quat(scalar_first=True, canonical=True)
+    np.testing.assert_allclose(q, scipy_q, atol=1e-15)
     panel.seq, panel.angles = "rose", [30.0, 20.0, 10.0]
     panel.flip = True
     np.testing.assert_array_equal(panel.state["quaternion"]["q"], -q)
