@@ -682,3 +682,28 @@ def test_the_gimbal_locks_on_the_page_of_notebook_07(site: Site) -> None:
         assert facts["recovered"] == ["read back: yaw 0°, pitch 90°, roll -20°"]
         assert "gimbal lock: only roll - yaw is defined" in facts["summary"]
         context.close()
+
+
+def test_a_stored_explorable_becomes_live_on_its_page(tmp_path: Path) -> None:
+    """Without a browser: the page's cell loads the copied ES module and keeps the picture for
+    a browser without JavaScript; no widget view and no note on running it in JupyterLab."""
+    from eulerlib_course.explorable import Explorable
+    from eulerlib_course.site import EXPLORABLE_MODULES, copy_explorable_modules
+
+    data, _ = Explorable("rose", [30, 85, 10])._repr_mimebundle_()
+    output = nbformat.v4.new_output("display_data", data=data)
+    notebook = nbformat.v4.new_notebook(
+        cells=[nbformat.v4.new_code_cell('Explorable("rose", [30, 85, 10])', outputs=[output])]
+    )
+    page = prepare_notebook(notebook, teacher="t", student=None, command="c")
+    cell = next(cell for cell in page.cells if cell.cell_type == "code")
+    shown = cell.outputs[0].data
+    assert set(shown) == {"text/html", "text/plain"}
+    live = shown["text/html"]
+    assert '<div class="eulerlib-explorable-live" data-settings="' in live
+    assert f'import {{ mount }} from "../{EXPLORABLE_MODULES}/explorable.js";' in live
+    assert '<noscript><div class="eulerlib-explorable"' in live and "base64," in live
+    assert not any("run this notebook in" in c.source for c in page.cells)
+    copied = copy_explorable_modules(tmp_path)
+    assert sorted(path.name for path in copied) == ["explorable.js", "rotations.js"]
+    assert all(path.parent == tmp_path / EXPLORABLE_MODULES for path in copied)

@@ -69,7 +69,8 @@ export function summary(config, controls, state) {
   if (state.time !== undefined) parts.push(`Time ${Math.round(state.time * 1e4) / 1e4}.`);
   for (const body of state.tracks) {
     const convention = getConvention(body.seq);
-    let sentence = `${body.label}: ${listing(body.names, body.angles)} (${convention.label}); `;
+    const named = body.label === convention.label ? "" : ` (${convention.label})`;
+    let sentence = `${body.label}: ${listing(body.names, body.angles)}${named}; `;
     sentence += body.locked
       ? `gimbal lock: only ${body.lock.combination} is defined, ${body.lock.zeroed} set to 0.`
       : `${formatDistance(body.distance)} from gimbal lock.`;
@@ -286,7 +287,7 @@ function rangeRow(parent, id, name, min, max, step, value, onInput) {
 }
 
 /** Draw an explorable into `el`, driven by `model`; returns a function that removes it. */
-export function render({ model, el }) {
+function render({ model, el }) {
   const id = `eulexp-${++counter}`;
   const config = model.get("config");
   const reducedMotion = window.matchMedia?.("(prefers-reduced-motion: reduce)").matches ?? false;
@@ -300,6 +301,10 @@ export function render({ model, el }) {
   const numbers = element("div", { class: "eulexp-numbers" }, root);
   const live = element("p", { class: "eulexp-summary", "aria-live": "polite", role: "status" }, root);
   el.appendChild(root);
+  // keys pressed in the explorable are its own: JupyterLab's shortcuts (arrows move between
+  // cells in command mode) never see them
+  root.dataset.lmSuppressShortcuts = "true";
+  root.addEventListener("keydown", (event) => event.stopPropagation());
 
   const controlValues = () => ({
     seq: model.get("seq"),
