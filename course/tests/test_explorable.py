@@ -270,3 +270,17 @@ def test_everything_public_is_documented_with_an_example() -> None:
         assert "Examples" in doc and ">>> " in doc, name
         if inspect.isfunction(value):
             assert "Parameters" in doc and "Returns" in doc, name
+
+
+def test_the_explorable_uses_only_the_librarys_public_api() -> None:
+    """No import of a private module or name of eulerlib (``eulerlib._x``, ``_name``)."""
+    import ast
+
+    source = (MODULE_FOLDER / "__init__.py").read_text(encoding="utf-8")
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.ImportFrom) and (node.module or "").startswith("eulerlib"):
+            assert not any(part.startswith("_") for part in (node.module or "").split("."))
+            assert not any(alias.name.startswith("_") for alias in node.names)
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                assert not any(part.startswith("_") for part in alias.name.split("."))

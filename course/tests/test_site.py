@@ -605,7 +605,8 @@ def test_five_notebooks_show_explorables() -> None:
 @pytest.mark.parametrize("width", [1280, 390], ids=["desktop", "phone"])
 def test_explorables_are_live_on_the_site(site: Site, width: int) -> None:
     """Drag the view and operate a control: the picture and the numbers change, computed in the
-    page; nothing is asked of another host; the page fits a phone's width."""
+    page; nothing is asked of another host; the page fits a phone's width (where the browser
+    asks for reduced motion, and nothing offers to play)."""
     from playwright.sync_api import sync_playwright
 
     arguments = [*CHROMIUM_ARGS]
@@ -618,6 +619,7 @@ def test_explorables_are_live_on_the_site(site: Site, width: int) -> None:
             headless=True,
             args=arguments,
             viewport={"width": width, "height": 900},
+            reduced_motion="reduce" if width < 500 else "no-preference",
         )
         for name in explorable_notebooks():
             visit = Visit()
@@ -652,6 +654,17 @@ def test_explorables_are_live_on_the_site(site: Site, width: int) -> None:
             assert after["summary"] != before["summary"]
             assert (after["matrix"], after["recovered"]) != (before["matrix"], before["recovered"])
             assert not after["overflow"], "wider than the window"
+            # a recording or a path plays only on request, and not at all with reduced motion
+            steps = live.get_by_role("button", name="step on ▶").count()
+            plays = live.get_by_role("button", name="play").count()
+            assert plays == (steps if width >= 500 else 0)
+            if plays:
+                moment = live.locator("input[type=range]").first
+                start = moment.input_value()
+                live.get_by_role("button", name="play").click()
+                page.wait_for_function(
+                    "([e, v]) => e.value !== v", arg=[moment.element_handle(), start]
+                )
             page.close()
             assert visit.refused == [], name
             assert visit.failed == [], name
