@@ -212,7 +212,7 @@ def test_the_widget_module_is_the_two_modules_as_one() -> None:
     assert "import " not in "".join(
         line for line in joined.splitlines() if line.startswith("import ")
     )
-    assert "export function computeState" in joined and "export function render" in joined
+    assert "export function computeState" in joined and "export default { render }" in joined
 
 
 def test_the_stored_output_is_the_words_a_picture_and_the_settings() -> None:
