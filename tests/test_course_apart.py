@@ -60,7 +60,7 @@ def test_the_check_sees_an_import_of_the_course(tmp_path: Path) -> None:
     """The check itself works, for each way of importing."""
     for line in (
         "import eulerlib_course",
-        "from eulerlib_course.explorer import explorer",
+        "from eulerlib_course.explorable import Explorable",
         "from eulerlib_course import check",
         "def f():\n    import eulerlib_course.cli",
         "import importlib\nimportlib.import_module('eulerlib_course')",

@@ -11,8 +11,9 @@ The library (:mod:`eulerlib`) computes; this package looks after the course buil
   exercises graded by the same answer key;
 * :mod:`~eulerlib_course.site`: the course as a static website that needs no network;
 * :mod:`~eulerlib_course.figures`: every figure of the course, drawn from the library;
-* :mod:`~eulerlib_course.explorer`: three angle sliders and a convention selector for
-  JupyterLab (ipywidgets), and its testable core :func:`~eulerlib_course.explorer.explorer_state`;
+* :mod:`~eulerlib_course.explorable`: rotations to turn with the mouse, an anywidget in
+  JupyterLab (eulerlib computes) whose ES module also runs on the website (a JavaScript port
+  computes, held against eulerlib by the tests);
 * :mod:`~eulerlib_course.commands` and :mod:`~eulerlib_course.cli`: the command line
   ``eulerlib-course``, with ``notebooks student|nbgrader|refresh``, ``figures`` and
   ``site build``.
@@ -22,8 +23,8 @@ the library (never the other way round). ``pip install -e ./course`` installs it
 notebooks and most commands need (the library's ``symbolic`` and ``plot`` extras, JupyterLab,
 widgets, nbformat, nbclient, nbconvert); its ``teach`` extra (nbgrader) and ``site`` extra
 (Jupyter Book) add what the edition and the website need. Importing this package loads none of
-the tools; it offers the two names a notebook's exercises use, and :mod:`~eulerlib_course.explorer`
-the notebooks' interactive explorer:
+the tools; it offers the two names a notebook's exercises use, and
+:mod:`~eulerlib_course.explorable` the notebooks' explorables:
 
 >>> from eulerlib_course import check, given
 """

@@ -14,7 +14,7 @@ the stored notebook must be exactly what a fresh execution writes, in a normal f
   no timings, no ``collapsed``/``scrolled`` state, no empty entries;
 * notebook metadata reduced to the ``python3`` kernelspec, the language name and, when a cell
   shows a widget, the widgets' saved state (``widgets``), which lets JupyterLab draw a widget's
-  first state — the explorer's picture and sliders — when no kernel is running;
+  first state — an explorable's picture and controls — when no kernel is running;
 * cell ids derived from the cell's position (``cell-000``, ``cell-001``, …), so re-running
   never changes them.
 

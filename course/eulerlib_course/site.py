@@ -16,9 +16,13 @@ source.
   the title offers the notebook for download, as the teacher's edition (the committed file)
   and as a student copy (:mod:`eulerlib_course.student`), and shows the README's command that
   opens the course in JupyterLab; worked solutions are folded behind a "Show the worked
-  solution" button; a widget shows the picture stored next to it, with a sentence on running
-  it live, and the widgets' saved state is dropped so that no widget JavaScript is fetched; an
-  animation's player takes its icons from the theme's own Font Awesome instead of a CDN;
+  solution" button; an explorable (:mod:`eulerlib_course.explorable`) becomes live, computed
+  in the page by its JavaScript port, with its stored picture for a browser without
+  JavaScript (:func:`live_explorables`); another widget shows the picture stored next to it,
+  with a sentence on running it live, and the widgets' saved state is dropped so that no
+  widget JavaScript is fetched; an animation's player takes its icons from the theme's own
+  Font Awesome instead of a CDN;
+* it copies the explorables' ES modules into the site (:func:`copy_explorable_modules`);
 * it runs Sphinx, with MathJax 3 copied into the site from the ``sphinx-mathjax-offline``
   package, and copies the HTML into the output folder, replacing a site built there before.
 
@@ -55,9 +59,11 @@ from eulerlib_course.student import SOLUTION_TAG, student_copy
 __all__ = [
     "SiteBuild",
     "build_site",
+    "copy_explorable_modules",
     "course_pages",
     "figure_alts",
     "jupyterlab_command",
+    "live_explorables",
     "prepare_notebook",
     "table_of_contents",
 ]
@@ -260,6 +266,7 @@ def prepare_notebook(
                 "code_prompt_show": "Show the worked solution",
                 "code_prompt_hide": "Hide the worked solution",
             }
+        live_explorables(cell)
         if _replace_widgets(cell, f"{name}, cell {index}"):
             cells.append(nbformat.v4.new_markdown_cell(_WIDGET_NOTE))
     downloads = (
@@ -301,6 +308,74 @@ def _replace_widgets(cell: Any, where: str) -> bool:
             text = "".join(html) if isinstance(html, list) else html
             data["text/html"] = _REMOTE_FONT_AWESOME.sub("", text)
     return widget
+
+
+#: Where the explorables' ES modules are in the site, relative to its top folder.
+EXPLORABLE_MODULES = "explorable"
+_EXPLORABLE = re.compile(
+    r'<div class="eulerlib-explorable" data-settings="(?P<settings>[^"]*)">.*?</div>\s*\Z',
+    re.DOTALL,
+)
+_LIVE_EXPLORABLE = """\
+<div class="eulerlib-explorable-live" data-settings="{settings}"></div>
+<noscript>{fallback}</noscript>
+<script type="module">
+import {{ mount }} from "../{modules}/explorable.js";
+for (const el of document.querySelectorAll(".eulerlib-explorable-live:not([data-mounted])")) {{
+  el.dataset.mounted = "true";
+  mount(el, JSON.parse(el.dataset.settings));
+}}
+</script>
+"""
+
+
+def copy_explorable_modules(extra: Path) -> list[Path]:
+    """Copy the explorables' ES modules into ``extra``/explorable/ (the site's top folder).
+
+    Returns the files copied. The modules are part of the course package; nothing is fetched.
+    """
+    from eulerlib_course.explorable import MODULE_FILES, MODULE_FOLDER
+
+    target = extra / EXPLORABLE_MODULES
+    target.mkdir(parents=True, exist_ok=True)
+    copied = []
+    for name in MODULE_FILES:
+        shutil.copyfile(MODULE_FOLDER / name, target / name)
+        copied.append(target / name)
+    return copied
+
+
+def live_explorables(cell: Any) -> int:
+    """Turn each stored explorable of a cell's outputs into a live one; return how many.
+
+    An explorable's stored output (:class:`eulerlib_course.explorable.Explorable`) is a widget
+    view and a ``text/html`` picture marked with its settings. On the page the widget view is
+    dropped and the picture becomes a ``<div>`` that a ``<script type="module">`` fills with the
+    explorable, computed by the port in the page; the picture stays inside ``<noscript>``.
+
+    Examples
+    --------
+    >>> import nbformat
+    >>> stored = '<div class="eulerlib-explorable" data-settings="{}"><img src="p.png"></div>'
+    >>> output = nbformat.v4.new_output("display_data", data={"text/html": stored})
+    >>> cell = nbformat.v4.new_code_cell("Explorable()", outputs=[output])
+    >>> live_explorables(cell), "<noscript><div" in cell.outputs[0].data["text/html"]
+    (1, True)
+    """
+    count = 0
+    for output in cell.get("outputs", []):
+        data = output.get("data", {})
+        page = data.get("text/html")
+        text = "".join(page) if isinstance(page, list) else page
+        found = _EXPLORABLE.match(text.strip()) if isinstance(text, str) else None
+        if found is None:
+            continue
+        data.pop(_WIDGET_VIEW, None)
+        data["text/html"] = _LIVE_EXPLORABLE.format(
+            settings=found["settings"], fallback=text.strip(), modules=EXPLORABLE_MODULES
+        )
+        count += 1
+    return count
 
 
 def landing_page_gaps(landing: str, readme: str) -> list[str]:
@@ -486,6 +561,7 @@ def _stage(root: Path, stage: Path) -> tuple[list[str], list[str], dict[str, str
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(root / picture, target)
     (stage / "_extra").mkdir(exist_ok=True)
+    copy_explorable_modules(stage / "_extra")
     downloads = stage / "downloads"
     downloads.mkdir(parents=True, exist_ok=True)
     (stage / "notebooks").mkdir(parents=True, exist_ok=True)

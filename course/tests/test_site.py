@@ -857,3 +857,161 @@ def test_landing_page_is_the_readme_course_map(site: Site) -> None:
     for picture in re.findall(r'src="(figures/[^"]+)"', course):
         assert f'src="{picture}"' in landing
     assert jupyterlab_command(README) in page_text(landing)
+
+
+# --- the live explorables on the built site ------------------------------------------------------
+
+#: What the page of a live explorable says about it: the picture's drawing, its view angles,
+#: the numbers and the live summary.
+EXPLORABLE_FACTS = """(root) => {
+  const svg = root.querySelector("svg");
+  return {
+    drawing: svg ? svg.innerHTML : "",
+    azimuth: svg ? Number(svg.dataset.azimuth) : null,
+    matrix: [...root.querySelectorAll(".eulexp-matrix")].map((e) => e.textContent).join("|"),
+    recovered: [...root.querySelectorAll(".eulexp-recovered")].map((e) => e.textContent),
+    lock: [...root.querySelectorAll(".eulexp-lock")].map((e) => e.dataset.locked),
+    summary: (root.querySelector("[aria-live]") || {}).textContent || "",
+    sliders: [...root.querySelectorAll("input[type=range]")].map((e) => e.labels.length
+      + (e.getAttribute("aria-label") ? 1 : 0)),
+    overflow: document.documentElement.scrollWidth > window.innerWidth + 1,
+  };
+}"""
+
+
+def explorable_notebooks() -> list[str]:
+    """The pages whose notebook stores an explorable."""
+    return [
+        page
+        for page, path in zip(NOTEBOOK_PAGES, NOTEBOOKS, strict=True)
+        if any(
+            'class="eulerlib-explorable"' in "".join(output.get("data", {}).get("text/html", ""))
+            for cell in read(path).cells
+            for output in cell.get("outputs", [])
+        )
+    ]
+
+
+def test_five_notebooks_show_explorables() -> None:
+    names = [Path(page).stem[:2] for page in explorable_notebooks()]
+    assert names == ["07", "08", "11", "12", "14"]
+
+
+@pytest.mark.parametrize("width", [1280, 390], ids=["desktop", "phone"])
+def test_explorables_are_live_on_the_site(site: Site, width: int) -> None:
+    """Drag the view and operate a control: the picture and the numbers change, computed in the
+    page; nothing is asked of another host; the page fits a phone's width (where the browser
+    asks for reduced motion, and nothing offers to play)."""
+    from playwright.sync_api import sync_playwright
+
+    arguments = [*CHROMIUM_ARGS]
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        arguments.append("--no-sandbox")
+    with tempfile.TemporaryDirectory() as profile, sync_playwright() as playwright:
+        context = playwright.chromium.launch_persistent_context(
+            profile,
+            executable_path=chromium_executable(),
+            headless=True,
+            args=arguments,
+            viewport={"width": width, "height": 900},
+            reduced_motion="reduce" if width < 500 else "no-preference",
+        )
+        for name in explorable_notebooks():
+            visit = Visit()
+            page = context.new_page()
+            watch(page, visit)
+            page.goto(site.url + name, wait_until="load")
+            live = page.locator(".eulerlib-explorable-live").first
+            live.locator("svg").first.wait_for()
+            live.locator("svg").first.scroll_into_view_if_needed()
+            before = live.evaluate(EXPLORABLE_FACTS)
+            assert all(count >= 1 for count in before["sliders"]), "a slider without a label"
+            assert before["summary"] and before["matrix"]
+            # drag the view
+            box = live.locator("svg").first.bounding_box()
+            assert box is not None
+            x, y = box["x"] + box["width"] / 2, box["y"] + box["height"] / 2
+            page.mouse.move(x, y)
+            page.mouse.down()
+            page.mouse.move(x + 60, y + 20, steps=5)
+            page.mouse.up()
+            dragged = live.evaluate(EXPLORABLE_FACTS)
+            assert dragged["azimuth"] != before["azimuth"]
+            assert dragged["drawing"] != before["drawing"]
+            assert dragged["matrix"] == before["matrix"]  # turning the view turns no body
+            # operate a control from the keyboard: the first slider, five steps of 1°
+            slider = live.locator("input[type=range]").first
+            slider.focus()
+            for _ in range(5):
+                page.keyboard.press("ArrowRight")
+            after = live.evaluate(EXPLORABLE_FACTS)
+            assert after["drawing"] != dragged["drawing"]
+            assert after["summary"] != before["summary"]
+            assert (after["matrix"], after["recovered"]) != (before["matrix"], before["recovered"])
+            assert not after["overflow"], "wider than the window"
+            # a recording or a path plays only on request, and not at all with reduced motion
+            steps = live.get_by_role("button", name="step on ▶").count()
+            plays = live.get_by_role("button", name="play").count()
+            assert plays == (steps if width >= 500 else 0)
+            if plays:
+                moment = live.locator("input[type=range]").first
+                start = moment.input_value()
+                live.get_by_role("button", name="play").click()
+                page.wait_for_function(
+                    "([e, v]) => e.value !== v", arg=[moment.element_handle(), start]
+                )
+            page.close()
+            assert visit.refused == [], name
+            assert visit.failed == [], name
+            assert visit.console_errors == [], name
+        context.close()
+
+
+def test_the_gimbal_locks_on_the_page_of_notebook_07(site: Site) -> None:
+    """Raise the pitch of notebook 07's explorable from 85° to 90°: the page says LOCKED and
+    reads back yaw 0, as eulerlib does."""
+    from playwright.sync_api import sync_playwright
+
+    arguments = [*CHROMIUM_ARGS]
+    if hasattr(os, "geteuid") and os.geteuid() == 0:
+        arguments.append("--no-sandbox")
+    with tempfile.TemporaryDirectory() as profile, sync_playwright() as playwright:
+        context = playwright.chromium.launch_persistent_context(
+            profile, executable_path=chromium_executable(), headless=True, args=arguments
+        )
+        page = context.new_page()
+        page.goto(site.url + explorable_notebooks()[0], wait_until="load")
+        live = page.locator(".eulerlib-explorable-live").first
+        pitch = live.locator("input[type=number]").nth(1)
+        pitch.fill("90")
+        pitch.press("Enter")
+        facts = live.evaluate(EXPLORABLE_FACTS)
+        assert facts["lock"] == ["true"]
+        assert facts["recovered"] == ["read back: yaw 0°, pitch 90°, roll -20°"]
+        assert "gimbal lock: only roll - yaw is defined" in facts["summary"]
+        context.close()
+
+
+def test_a_stored_explorable_becomes_live_on_its_page(tmp_path: Path) -> None:
+    """Without a browser: the page's cell loads the copied ES module and keeps the picture for
+    a browser without JavaScript; no widget view and no note on running it in JupyterLab."""
+    from eulerlib_course.explorable import Explorable
+    from eulerlib_course.site import EXPLORABLE_MODULES, copy_explorable_modules
+
+    data, _ = Explorable("rose", [30, 85, 10])._repr_mimebundle_()
+    output = nbformat.v4.new_output("display_data", data=data)
+    notebook = nbformat.v4.new_notebook(
+        cells=[nbformat.v4.new_code_cell('Explorable("rose", [30, 85, 10])', outputs=[output])]
+    )
+    page = prepare_notebook(notebook, teacher="t", student=None, command="c")
+    cell = next(cell for cell in page.cells if cell.cell_type == "code")
+    shown = cell.outputs[0].data
+    assert set(shown) == {"text/html", "text/plain"}
+    live = shown["text/html"]
+    assert '<div class="eulerlib-explorable-live" data-settings="' in live
+    assert f'import {{ mount }} from "../{EXPLORABLE_MODULES}/explorable.js";' in live
+    assert '<noscript><div class="eulerlib-explorable"' in live and "base64," in live
+    assert not any("run this notebook in" in c.source for c in page.cells)
+    copied = copy_explorable_modules(tmp_path)
+    assert sorted(path.name for path in copied) == ["explorable.js", "rotations.js"]
+    assert all(path.parent == tmp_path / EXPLORABLE_MODULES for path in copied)

@@ -26,8 +26,9 @@ What there is
   through a stack of rotations, to compare interpolations or follow a motion.
 
 Everything listed is available directly from ``eulerlib.plotting``. The course's interactive
-explorer (sliders in JupyterLab, built on these drawings) is part of the course package,
-:mod:`eulerlib_course.explorer`.
+explorables (rotations to turn with the mouse in JupyterLab and on the website, whose
+stored pictures are drawn with these functions) are part of the course package,
+:mod:`eulerlib_course.explorable`.
 
 A sequence ``seq`` means what it means everywhere in eulerlib (and in SciPy): uppercase is
 intrinsic, lowercase extrinsic, angle ``i`` goes with letter ``i``. An extrinsic sequence is
