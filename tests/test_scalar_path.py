@@ -1,0 +1,206 @@
+"""The path of one rotation in Python floats against the array path, on the same inputs.
+
+A single rotation (``(3,)`` angles, a ``(3, 3)`` matrix, a ``(4,)`` quaternion) is computed in
+Python floats (:mod:`eulerlib._scalar`); the same rotation with a leading axis of length 1 takes
+the array path. Both must give the same numbers, to the last bit or to one unit in the last
+place (numpy's vectorized sine, cosine and tangent may differ from the C library's by that
+much), the same types and shapes, and the same errors and warnings. The oracle is the array
+path, which the other test files hold against SciPy, mpmath and the papers.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from scipy.spatial.transform import Rotation
+
+import eulerlib
+from eulerlib import ALL_SEQUENCES, GimbalLockWarning
+
+SEQUENCES = [*ALL_SEQUENCES, "rose", "baker", "ros"]
+
+
+def assert_ulp(single: np.ndarray, batch: np.ndarray, ulps: int = 0) -> None:
+    """``single`` (one rotation) equals ``batch[0]`` to ``ulps`` units in the last place."""
+    assert type(single) is np.ndarray and single.dtype == np.float64
+    assert single.shape == batch.shape[1:]
+    expected = batch[0]
+    spacing = np.spacing(np.maximum(np.abs(single), np.abs(expected)))
+    worst = np.max(np.abs(single - expected) / spacing)
+    assert worst <= ulps, (single, expected, worst)
+
+
+angle = st.floats(-4.0, 4.0, allow_nan=False)
+degree = st.floats(-1e6, 1e6, allow_nan=False)
+hard_angle = st.sampled_from(
+    [
+        0.0,
+        -0.0,
+        1e-300,
+        -1e-17,
+        1e-8,
+        np.pi / 2,
+        -np.pi / 2,
+        np.pi,
+        -np.pi,
+        np.nextafter(np.pi, 0),
+        np.pi / 2 + 1e-15,
+        1e300,
+        -1e20,
+        2.0**60,
+    ]
+)
+hard_degree = st.sampled_from(
+    [0.0, 90.0, -90.0, 180.0, 270.0, 45.0, 360.0, 1e20, 89.9999999999, -1e300]
+)
+triple = st.tuples(
+    st.one_of(angle, hard_angle), st.one_of(angle, hard_angle), st.one_of(angle, hard_angle)
+)
+triple_degrees = st.tuples(
+    st.one_of(degree, hard_degree), st.one_of(degree, hard_degree), st.one_of(degree, hard_degree)
+)
+
+
+@settings(max_examples=300, deadline=None)
+@given(values=triple, seq=st.sampled_from(SEQUENCES))
+def test_euler_to_matrix_and_quaternion(values: tuple[float, float, float], seq: str) -> None:
+    one, batch = np.array(values), np.array([values])
+    assert_ulp(eulerlib.euler_to_matrix(one, seq), eulerlib.euler_to_matrix(batch, seq))
+    assert_ulp(eulerlib.euler_to_quaternion(one, seq), eulerlib.euler_to_quaternion(batch, seq))
+    assert_ulp(eulerlib.euler_to_matrix(list(values), seq), eulerlib.euler_to_matrix(batch, seq))
+
+
+@settings(max_examples=300, deadline=None)
+@given(values=triple_degrees, seq=st.sampled_from(SEQUENCES), first=st.booleans())
+def test_degrees(values: tuple[float, float, float], seq: str, first: bool) -> None:
+    one, batch = np.array(values), np.array([values])
+    assert_ulp(
+        eulerlib.euler_to_matrix(one, seq, degrees=True),
+        eulerlib.euler_to_matrix(batch, seq, degrees=True),
+    )
+    assert_ulp(
+        eulerlib.euler_to_quaternion(one, seq, degrees=True, scalar_first=first),
+        eulerlib.euler_to_quaternion(batch, seq, degrees=True, scalar_first=first),
+    )
+
+
+def matrices() -> list[np.ndarray]:
+    """Random rotations, rotations at and next to gimbal lock, half turns, tiny turns, and
+    matrices with rounding noise, for every sequence's poles."""
+    rng = np.random.default_rng(7)
+    found = list(Rotation.random(200, rng=rng).as_matrix())
+    for seq in ALL_SEQUENCES:
+        middle = 0.0 if seq[0].lower() == seq[2].lower() else np.pi / 2
+        for offset in (0.0, 1e-16, 1e-15, 1e-12, 1e-8, 1e-3):
+            for sign in (1.0, -1.0):
+                angles = np.array([0.3, middle + sign * offset, -1.2])
+                found.append(Rotation.from_euler(seq, angles).as_matrix())
+    for axis in np.eye(3):
+        for turn in (np.pi, np.nextafter(np.pi, 0), 1e-300, 1e-9, 0.0):
+            found.append(Rotation.from_rotvec(axis * turn).as_matrix())
+    Q = Rotation.random(50, rng=rng).as_matrix()
+    found.extend(Q @ np.swapaxes(Q, -1, -2) @ Rotation.random(50, rng=rng).as_matrix())
+    found.extend(np.round(Rotation.random(20, rng=rng).as_matrix(), 7))  # inside atol only
+    return found
+
+
+MATRICES = matrices()
+
+
+@pytest.mark.parametrize("seq", SEQUENCES)
+def test_matrix_to_euler(seq: str) -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", GimbalLockWarning)
+        for R in MATRICES:
+            for degrees in (False, True):
+                one = eulerlib.matrix_to_euler(R, seq, degrees=degrees)
+                batch = eulerlib.matrix_to_euler(R[np.newaxis], seq, degrees=degrees)
+                assert_ulp(one, batch)
+
+
+@pytest.mark.parametrize("first", [False, True])
+def test_matrix_to_quaternion_and_back(first: bool) -> None:
+    for R in MATRICES:
+        q = eulerlib.matrix_to_quaternion(R, scalar_first=first)
+        assert_ulp(q, eulerlib.matrix_to_quaternion(R[np.newaxis], scalar_first=first))
+        assert_ulp(
+            eulerlib.quaternion_to_matrix(q, scalar_first=first),
+            eulerlib.quaternion_to_matrix(q[np.newaxis], scalar_first=first),
+            ulps=0,
+        )
+
+
+quaternion_component = st.one_of(
+    st.floats(-2.0, 2.0, allow_nan=False),
+    st.sampled_from([0.0, -0.0, 1e-300, -1e-200, 1e-17, 1e150, 1e-160, 5e-324]),
+)
+
+
+@settings(max_examples=300, deadline=None)
+@given(q=st.tuples(*[quaternion_component] * 4), seq=st.sampled_from(SEQUENCES))
+def test_quaternions(q: tuple[float, float, float, float], seq: str) -> None:
+    one, batch = np.array(q), np.array([q])
+    try:
+        expected = eulerlib.quaternion_to_matrix(batch)
+    except ValueError as error:  # a zero quaternion: the same refusal on both paths
+        with pytest.raises(ValueError) as caught:
+            eulerlib.quaternion_to_matrix(one)
+        assert str(caught.value).replace(" at index (0,)", "") == str(error).replace(
+            " at index (0,)", ""
+        )
+        return
+    assert_ulp(eulerlib.quaternion_to_matrix(one), expected, ulps=0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", GimbalLockWarning)
+        assert_ulp(eulerlib.quaternion_to_euler(one, seq), eulerlib.quaternion_to_euler(batch, seq))
+
+
+def test_the_same_refusals() -> None:
+    """A bad single rotation gets the array path's message, word for word."""
+    bad = [
+        ([1.0, float("nan"), 0.0], "angles must be finite, got nan at index (1,)"),
+        ([1.0, 2.0], "angles must have shape (..., 3), got shape (2,)"),
+    ]
+    for value, message in bad:
+        with pytest.raises(ValueError) as caught:
+            eulerlib.euler_to_matrix(value)
+        assert str(caught.value) == message
+    reflection = np.diag([1.0, 1.0, -1.0])
+    scaled = 1.001 * np.eye(3)
+    for function in (eulerlib.matrix_to_euler, eulerlib.matrix_to_quaternion):
+        for R in (reflection, scaled, reflection.tolist()):
+            with pytest.raises(ValueError) as single:
+                function(R)
+            with pytest.raises(ValueError) as batch:
+                function(np.asarray(R)[np.newaxis])
+            assert str(single.value) == str(batch.value).replace(" at index (0,)", "")
+    with pytest.raises(TypeError) as caught:
+        eulerlib.euler_to_matrix(["1", 0.0, 0.0])
+    assert str(caught.value) == "angles must be real numbers, got text"
+
+
+def test_the_same_warning_at_lock() -> None:
+    R = eulerlib.euler_to_matrix([30, 90, 10], degrees=True)
+    with pytest.warns(GimbalLockWarning) as single:
+        one = eulerlib.matrix_to_euler(R)
+    with pytest.warns(GimbalLockWarning) as batch:
+        many = eulerlib.matrix_to_euler(R[np.newaxis])
+    assert str(single[0].message) == str(batch[0].message)
+    assert_ulp(one, many, ulps=0)
+
+
+def test_plain_lists_and_tuples() -> None:
+    R = eulerlib.euler_to_matrix((0.1, 0.2, 0.3))
+    assert_ulp(eulerlib.matrix_to_euler(R.tolist()), eulerlib.matrix_to_euler(R[np.newaxis]))
+    assert_ulp(
+        eulerlib.matrix_to_euler(tuple(map(tuple, R))), eulerlib.matrix_to_euler(R[np.newaxis])
+    )
+    assert_ulp(
+        eulerlib.euler_to_matrix([30, 20, 10], degrees=True),
+        eulerlib.euler_to_matrix([[30.0, 20.0, 10.0]], degrees=True),
+        ulps=0,
+    )
