@@ -10,6 +10,7 @@ takes the same ``validate``, ``repair`` and ``atol`` keywords.
 
 from __future__ import annotations
 
+import math
 from functools import reduce
 
 import numpy as np
@@ -82,18 +83,29 @@ def rotate_points(
     array([[ 0.,  1.,  0.],
            [-2.,  0.,  0.]])
     """
-    matrices = as_rotations(R, "R", rotation_check(validate, repair, atol))
-    vectors = as_vectors(points, "points")
+    check = rotation_check(validate, repair, atol)
+    matrices = as_rotations(R, "R", check)
+    # Finiteness of the points is checked on the result, in the same pass: each coordinate of
+    # a point enters the result through a nonzero entry of its column of R (a rotation has no
+    # zero column), so a NaN or an infinity in a point makes the result's sum NaN or infinite.
+    # Only then, or for unchecked matrices, are the points searched, by the usual check.
+    checked_on_result = check.validate or check.repair
+    vectors = as_vectors(points, "points", finite=not checked_on_result)
     try:
         np.broadcast_shapes(matrices.shape[:-2], vectors.shape[:-1])
     except ValueError:
+        as_vectors(points, "points")  # a NaN or an infinity is reported first, as always
         raise ValueError(
             f"R with shape {matrices.shape} and points with shape {vectors.shape} do not "
             "broadcast: their leading axes (all but the last two of R, all but the last of "
             "points) must be compatible"
         ) from None
     with np.errstate(over="ignore", invalid="ignore"):  # huge points: redone below
-        rotated = _rotated(matrices, vectors)
+        rotated, finite = _rotated(matrices, vectors)
+    if finite:
+        return rotated
+    if checked_on_result:
+        as_vectors(points, "points")  # raises for a NaN or an infinity among the points
     bad = overflowed(rotated)
     if bad.size:
         lead = rotated.shape[:-1]
@@ -105,7 +117,7 @@ def rotate_points(
             on_points = np.broadcast_to(vectors, (*lead, 3))[where]
         flat = rotated.reshape(-1, 3)  # a view: both layouts of _rotated allow it
         flat[bad] = rescaled(
-            lambda scale: _rotated(on_R, on_points * scale),
+            lambda scale: _rotated(on_R, on_points * scale)[0],
             bad,
             "points",
             "the rotated point",
@@ -114,14 +126,22 @@ def rotate_points(
     return rotated
 
 
-def _rotated(matrices: NDArray[np.float64], vectors: NDArray[np.float64]) -> NDArray[np.float64]:
-    """``R p`` for each point (rows of ``vectors``), broadcast over the leading axes."""
-    if matrices.ndim == 2:  # one rotation for all points: a single BLAS product, R (3, n)
-        columns = vectors.reshape(-1, 3).T
-        turned: NDArray[np.float64] = (matrices @ columns).T.reshape(vectors.shape)
-        return turned
+def _rotated(
+    matrices: NDArray[np.float64], vectors: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], bool]:
+    """``R p`` for each point (rows of ``vectors``), broadcast over the leading axes, and
+    whether the whole result is finite (one sum, taken while each block is in the cache)."""
+    if matrices.ndim == 2:  # one rotation for all points: a BLAS product per block
+        flat = vectors.reshape(-1, 3)
+        out = np.empty(flat.shape)
+        total = 0.0
+        for block in block_slices(flat.shape[0]):
+            part = out[block]
+            np.matmul(matrices, flat[block].T, out=part.T)
+            total += float(np.sum(part))
+        return out.reshape(vectors.shape), math.isfinite(total)
     rotated: NDArray[np.float64] = (matrices @ vectors[..., np.newaxis])[..., 0]
-    return rotated
+    return rotated, math.isfinite(float(np.sum(rotated)))
 
 
 def invert(
