@@ -135,7 +135,12 @@ def intrinsic_angles(
     middle, distance, read = np.arctan2((*y, outer[0]), (*x, outer[1])).tolist()
     if distance <= tolerance:
         return None
-    sine_read, cosine_read = np.sin(read).item(), np.cos(read).item()
+    # its sine and cosine from the ratio, as eulerlib._euler_kernels.direction
+    length = math.sqrt(outer[0] * outer[0] + outer[1] * outer[1])
+    if length == 0.0:
+        sine_read, cosine_read = 0.0, 1.0
+    else:
+        sine_read, cosine_read = outer[0] / length, outer[1] / length
     if parsed.proper:
         if zero_first:
             first, s1, c1 = read, sine_read, cosine_read

@@ -99,10 +99,9 @@ long euler_to_matrix(const double *a, double *R, long n) {
 long matrix_to_euler(const double *R, double *a, long n, double atol, int check) {
     for (long i = 0; i < n; i++, R += 9, a += 3) {
         if (check ? !is_rotation(R, atol) : !finite9(R)) return i + 1;
-        double yaw = atan2(R[3], R[0]);
-        a[1] = atan2(-R[6], sqrt(R[0] * R[0] + R[3] * R[3]));
-        double s = sin(yaw), c = cos(yaw);
-        a[0] = yaw;
+        double r = sqrt(R[0] * R[0] + R[3] * R[3]), s = R[3] / r, c = R[0] / r;
+        a[0] = atan2(R[3], R[0]);
+        a[1] = atan2(-R[6], r);
         a[2] = atan2(s * R[2] - c * R[5], c * R[4] - s * R[1]);
     }
     return 0;
