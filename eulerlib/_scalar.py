@@ -67,6 +67,17 @@ def vector(value: Any) -> tuple[float, float, float] | None:
     return _numbers(value, 3)  # type: ignore[return-value]
 
 
+def number(value: Any) -> float | None:
+    """One finite number (a Python or NumPy number, not a bool), as a float, or None."""
+    if type(value) not in _NUMBER_TYPES:
+        return None
+    try:
+        number = float(value)
+    except OverflowError:
+        return None
+    return number if number - number == 0.0 else None
+
+
 def quaternion(value: Any) -> tuple[float, float, float, float] | None:
     """One quaternion of four finite numbers, or None."""
     return _numbers(value, 4)  # type: ignore[return-value]

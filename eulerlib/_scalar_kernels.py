@@ -250,3 +250,90 @@ def euler_to_quaternion(values: Three, parsed: Sequence, degrees: bool) -> Four:
         q[1 + k] *= -1.0
     factor = math.sqrt(1.0 / ((c1 * c1 + s1 * s1) * (c2 * c2 + s2 * s2) * (c3 * c3 + s3 * s3)))
     return make_canonical((q[0] * factor, q[1] * factor, q[2] * factor, q[3] * factor))
+
+
+def squared_length(values: tuple[float, ...]) -> float | None:
+    """``x² + y² + …`` in order, as :func:`eulerlib._length_kernels.squared_lengths`; None
+    when it leaves the range where :func:`eulerlib._length_kernels.lengths` needs no rescaling
+    (a zero vector included)."""
+    total = values[0] * values[0]
+    for value in values[1:]:
+        total += value * value
+    return total if _SMALL <= total <= _LARGE else None
+
+
+def rotation_angle(e: Nine) -> float | None:
+    """Angle of a rotation matrix, as :func:`eulerlib._quaternion_kernels.rotation_angles`;
+    None for a turn so small that the length of its skew part needs rescaling."""
+    r00, r01, r02, r10, r11, r12, r20, r21, r22 = e
+    squared = squared_length((r21 - r12, r02 - r20, r10 - r01))
+    if squared is None:
+        return None
+    trace = r00 + r11
+    trace += r22
+    return float(np.arctan2(math.sqrt(squared), trace - 1.0))
+
+
+def relative_angle(a: Nine, b: Nine) -> float | None:
+    """Angle of ``Aᵀ B``, as :func:`eulerlib._quaternion_kernels.relative_angles`; None when
+    the length of the skew part needs rescaling."""
+    trace = a[0] * b[0]
+    for i in range(1, 9):
+        trace += a[i] * b[i]
+    skew = [0.0, 0.0, 0.0]
+    for k in range(3):
+        a0, a1, a2 = a[3 * k : 3 * k + 3]
+        b0, b1, b2 = b[3 * k : 3 * k + 3]
+        skew[0] += b1 * a2 - b2 * a1
+        skew[1] += b2 * a0 - b0 * a2
+        skew[2] += b0 * a1 - b1 * a0
+    squared = squared_length(tuple(skew))
+    if squared is None:
+        return None
+    return float(np.arctan2(math.sqrt(squared), trace - 1.0))
+
+
+def vector_part(q: Four) -> tuple[Three, float] | None:
+    """The vector part of a quaternion and its length, or None when the length needs
+    rescaling (the identity's zero vector part included)."""
+    vector = (q[1], q[2], q[3])
+    squared = squared_length(vector)
+    return None if squared is None else (vector, math.sqrt(squared))
+
+
+def half_angle_pair(angle: float, degrees: bool) -> tuple[float, float]:
+    """:func:`half_angle_pairs` for one angle."""
+    if not degrees:
+        return 1.0, float(np.tan(0.5 * angle))
+    quarter, rest = quarter_turns(angle)
+    c, s = _HALF_QUARTER[int(quarter % 4.0)]
+    t = float(np.tan(0.5 * rest))
+    return c - s * t + 0.0, s + c * t + 0.0
+
+
+def rotvec_to_entries(v: Three, degrees: bool) -> Nine | None:
+    """Matrix entries of a rotation vector, as
+    :func:`eulerlib._quaternion_kernels.rotvecs_to_entries`; None for a vector whose length
+    needs rescaling (the zero vector included)."""
+    squared = squared_length(v)
+    if squared is None:
+        return None
+    length = math.sqrt(squared)
+    a, b = half_angle_pair(length, degrees)
+    factor = b / length
+    return quaternion_to_entries(a, v[0] * factor, v[1] * factor, v[2] * factor)
+
+
+def axis_angle_to_entries(axis: Three, angle: float, degrees: bool) -> Nine | None:
+    """Matrix entries of a turn about an axis of any length, as the body of
+    :func:`eulerlib.axis_angle_to_matrix`; None for a zero axis (refused by the array path)."""
+    largest = max(abs(axis[0]), abs(axis[1]), abs(axis[2]))
+    if largest == 0.0:
+        return None
+    exponent = math.frexp(largest)[1]  # scaled exactly, as _unit.scaled_to_unit_size
+    x, y, z = (math.ldexp(value, -exponent) for value in axis)
+    squared = x * x
+    squared += y * y
+    squared += z * z
+    a, b = half_angle_pair(angle, degrees)
+    return quaternion_to_entries(a * math.sqrt(squared), x * b, y * b, z * b)

@@ -16,6 +16,7 @@ from functools import reduce
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib import _scalar
 from eulerlib._blocks import block_slices
 from eulerlib._overflow import overflowed, rescaled
 from eulerlib._validation import (
@@ -84,6 +85,14 @@ def rotate_points(
            [-2.,  0.,  0.]])
     """
     check = rotation_check(validate, repair, atol)
+    one_R, one_point = _scalar.rotation(R, check), _scalar.vector(points)
+    if one_R is not None and one_point is not None:  # one point: checked in Python floats
+        with np.errstate(over="ignore", invalid="ignore"):  # a huge point: the array path
+            turned, finite = _rotated(
+                _scalar.as_array(one_R, (3, 3)), _scalar.as_array(one_point, (3,))
+            )
+        if finite:
+            return turned
     matrices = as_rotations(R, "R", check)
     # Finiteness of the points is checked on the result, in the same pass: each coordinate of
     # a point enters the result through a nonzero entry of its column of R (a rotation has no
@@ -171,7 +180,12 @@ def invert(
     >>> np.allclose(invert(R) @ R, np.eye(3))
     True
     """
-    matrices = as_rotations(R, "R", rotation_check(validate, repair, atol))
+    check = rotation_check(validate, repair, atol)
+    single = _scalar.rotation(R, check)
+    if single is not None:
+        a, b, c, d, e, f, g, h, i = single
+        return _scalar.as_array((a, d, g, b, e, h, c, f, i), (3, 3))
+    matrices = as_rotations(R, "R", check)
     transposed: NDArray[np.float64] = np.swapaxes(matrices, -1, -2).copy()
     return transposed
 
@@ -253,6 +267,11 @@ def compose(
     if not rotations:
         raise TypeError("compose() needs at least one rotation matrix")
     check = rotation_check(validate, repair, atol)
+    singles = [_scalar.rotation(R, check) for R in rotations]
+    if all(single is not None for single in singles):  # single matrices, checked in floats
+        factors = [_scalar.as_array(single, (3, 3)) for single in singles if single is not None]
+        product_of_singles: NDArray[np.float64] = reduce(np.matmul, factors)
+        return product_of_singles
     matrices = [as_rotations(R, f"rotation {n + 1}", check) for n, R in enumerate(rotations)]
     try:
         np.broadcast_shapes(*(m.shape for m in matrices))

@@ -2,9 +2,10 @@
 
 A single rotation (``(3,)`` angles, a ``(3, 3)`` matrix, a ``(4,)`` quaternion) is computed in
 Python floats (:mod:`eulerlib._scalar`); the same rotation with a leading axis of length 1 takes
-the array path. Both must give the same numbers, to the last bit or to one unit in the last
-place (numpy's vectorized sine, cosine and tangent may differ from the C library's by that
-much), the same types and shapes, and the same errors and warnings. The oracle is the array
+the array path. Both must give the same numbers to the last bit (the path of one rotation
+calls numpy's own sine, cosine, tangent and arctangent, whose vectorized code may differ from
+the C library's by a unit in the last place), the same types and shapes, and the same errors
+and warnings. The oracle is the array
 path, which the other test files hold against SciPy, mpmath and the papers.
 """
 
@@ -25,7 +26,8 @@ SEQUENCES = [*ALL_SEQUENCES, "rose", "baker", "ros"]
 
 
 def assert_ulp(single: np.ndarray, batch: np.ndarray, ulps: int = 0) -> None:
-    """``single`` (one rotation) equals ``batch[0]`` to ``ulps`` units in the last place."""
+    """``single`` (one rotation) equals ``batch[0]`` to ``ulps`` units in the last place
+    (0: bit for bit)."""
     assert type(single) is np.ndarray and single.dtype == np.float64
     assert single.shape == batch.shape[1:]
     expected = batch[0]
@@ -203,4 +205,94 @@ def test_plain_lists_and_tuples() -> None:
         eulerlib.euler_to_matrix([30, 20, 10], degrees=True),
         eulerlib.euler_to_matrix([[30.0, 20.0, 10.0]], degrees=True),
         ulps=0,
+    )
+
+
+def test_axis_angle_and_rotation_vectors() -> None:
+    rng = np.random.default_rng(3)
+    pairs = list(zip(MATRICES, [*MATRICES[1:], MATRICES[0]], strict=True))
+    for R, other in pairs:
+        for degrees in (False, True):
+            batch = eulerlib.matrix_to_axis_angle(R[np.newaxis], degrees=degrees)
+            one = eulerlib.matrix_to_axis_angle(R, degrees=degrees)
+            assert_ulp(one.axis, batch.axis)
+            assert_ulp(np.atleast_1d(one.angle), batch.angle[np.newaxis])
+            assert one.angle.shape == ()
+            v = eulerlib.matrix_to_rotvec(R, degrees=degrees)
+            assert_ulp(v, eulerlib.matrix_to_rotvec(R[np.newaxis], degrees=degrees))
+            assert_ulp(
+                eulerlib.rotvec_to_matrix(v, degrees=degrees),
+                eulerlib.rotvec_to_matrix(v[np.newaxis], degrees=degrees),
+            )
+            axis = rng.normal(size=3) * 10.0 ** rng.integers(-200, 200)
+            assert_ulp(
+                eulerlib.axis_angle_to_matrix(axis, float(one.angle), degrees=degrees),
+                eulerlib.axis_angle_to_matrix(
+                    axis[np.newaxis], [float(one.angle)], degrees=degrees
+                ),
+            )
+            angle = eulerlib.rotation_angle(R, degrees=degrees)
+            assert angle.shape == ()
+            assert_ulp(
+                np.atleast_1d(angle),
+                eulerlib.rotation_angle(R[np.newaxis], degrees=degrees)[np.newaxis],
+            )
+            between = eulerlib.angle_between(R, other, degrees=degrees)
+            assert between.shape == ()
+            assert_ulp(
+                np.atleast_1d(between),
+                eulerlib.angle_between(R[np.newaxis], other[np.newaxis], degrees=degrees)[
+                    np.newaxis
+                ],
+            )
+
+
+def test_matrices_and_points() -> None:
+    rng = np.random.default_rng(5)
+    for R, other in zip(MATRICES, [*MATRICES[1:], MATRICES[0]], strict=True):
+        point = rng.normal(size=3) * 10.0 ** rng.integers(-300, 300)
+        assert_ulp(
+            eulerlib.rotate_points(R, point),
+            eulerlib.rotate_points(R, point[np.newaxis]),
+        )
+        assert_ulp(eulerlib.invert(R), eulerlib.invert(R[np.newaxis]))
+        assert_ulp(eulerlib.compose(R, other), eulerlib.compose(R[np.newaxis], other[np.newaxis]))
+    # a point whose turn leaves the range of float64: the array path's refusal, word for word
+    huge = np.array([1.7e308, 1.7e308, -1.7e308])
+    R = eulerlib.euler_to_matrix([0.3, 0.2, 0.1])
+    with pytest.raises(ValueError) as single:
+        eulerlib.rotate_points(R, huge)
+    with pytest.raises(ValueError) as batch:
+        eulerlib.rotate_points(R, huge[np.newaxis])
+    assert str(single.value) == str(batch.value).replace(" at index (0,)", "")
+
+
+@settings(max_examples=200, deadline=None)
+@given(values=triple, degrees=st.booleans(), axis=st.sampled_from("xyz"))
+def test_named_converted_and_elementary(
+    values: tuple[float, float, float], degrees: bool, axis: str
+) -> None:
+    one, batch = np.array(values), np.array([values])
+    for to_matrix, from_matrix in (
+        (eulerlib.yaw_pitch_roll_to_matrix, eulerlib.matrix_to_yaw_pitch_roll),
+        (eulerlib.heading_attitude_bank_to_matrix, eulerlib.matrix_to_heading_attitude_bank),
+    ):
+        R = to_matrix(*values, degrees=degrees)
+        assert_ulp(R, to_matrix(*batch.T, degrees=degrees))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", GimbalLockWarning)
+            named, named_batch = from_matrix(R), from_matrix(R[np.newaxis])
+        for single, many in zip(named, named_batch, strict=True):
+            assert single.shape == ()
+            assert_ulp(np.atleast_1d(single), many[np.newaxis])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", GimbalLockWarning)
+        for source, target in (("ZYX", "xyz"), ("rose", "baker"), ("ZXZ", "yzy")):
+            assert_ulp(
+                eulerlib.convert_angles(one, source, target, degrees=degrees),
+                eulerlib.convert_angles(batch, source, target, degrees=degrees),
+            )
+    assert_ulp(
+        eulerlib.elementary_rotation(axis, values[0], degrees=degrees),
+        eulerlib.elementary_rotation(axis, [values[0]], degrees=degrees),
     )
