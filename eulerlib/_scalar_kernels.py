@@ -337,3 +337,45 @@ def axis_angle_to_entries(axis: Three, angle: float, degrees: bool) -> Nine | No
     squared += z * z
     a, b = half_angle_pair(angle, degrees)
     return quaternion_to_entries(a * math.sqrt(squared), x * b, y * b, z * b)
+
+
+def transposed_product(a: Nine, b: Nine) -> Nine:
+    """Entries of ``Aᵀ B``, as :func:`eulerlib._quaternion_kernels.transposed_product`."""
+    e = [0.0] * 9
+    for i in range(3):
+        for j in range(3):
+            total = a[i] * b[j]
+            total += a[3 + i] * b[3 + j]
+            total += a[6 + i] * b[6 + j]
+            e[3 * i + j] = total
+    return tuple(e)  # type: ignore[return-value]
+
+
+def product(a: Nine, b: Nine) -> Nine:
+    """Entries of ``A B`` without negative zeros, as :func:`eulerlib._quaternion_kernels.product`
+    followed by ``+= 0.0``."""
+    e = [0.0] * 9
+    for i in range(3):
+        for j in range(3):
+            total = a[3 * i] * b[j]
+            total += a[3 * i + 1] * b[3 + j]
+            e[3 * i + j] = (total + a[3 * i + 2] * b[6 + j]) + 0.0
+    return tuple(e)  # type: ignore[return-value]
+
+
+def slerp_entries(start: Nine, end: Nine, t: float) -> Nine | None:
+    """Entries of the rotation a fraction ``t`` of the way from ``start`` to ``end``, as the
+    body of :func:`eulerlib.slerp`; None for ends so close that a length needs rescaling, and
+    for a turn that overflows (the array path refuses it)."""
+    relative = entries_to_quaternion(transposed_product(start, end))
+    part = vector_part(relative)
+    if part is None:
+        return None
+    vector, sine = part
+    with np.errstate(over="ignore"):
+        half_turn = float(np.arctan2(sine, relative[0])) * t
+    if half_turn - half_turn != 0.0:
+        return None
+    factor = float(np.tan(half_turn)) / sine
+    turn = quaternion_to_entries(1.0, vector[0] * factor, vector[1] * factor, vector[2] * factor)
+    return None if turn is None else product(start, turn)

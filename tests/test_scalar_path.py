@@ -296,3 +296,35 @@ def test_named_converted_and_elementary(
         eulerlib.elementary_rotation(axis, values[0], degrees=degrees),
         eulerlib.elementary_rotation(axis, [values[0]], degrees=degrees),
     )
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    t=st.one_of(st.floats(-3.0, 3.0), st.sampled_from([0.0, 1.0, 0.5, 1e-300, 1e300])),
+    dt=st.one_of(st.floats(-10.0, 10.0), st.sampled_from([0.0, 1e-300, 1e300])),
+    pick=st.integers(0, len(MATRICES) - 2),
+    degrees=st.booleans(),
+    space=st.booleans(),
+)
+def test_slerp_and_integration(t: float, dt: float, pick: int, degrees: bool, space: bool) -> None:
+    R0, R1 = MATRICES[pick], MATRICES[pick + 1]
+    omega = np.array([0.3, -2.0, 1.1])
+    for single, batch in (
+        (lambda: eulerlib.slerp(R0, R1, t), lambda: eulerlib.slerp(R0, R1, [t])),
+        (
+            lambda: eulerlib.integrate_angular_velocity(
+                R0, omega, dt, degrees=degrees, frame="space" if space else "body"
+            ),
+            lambda: eulerlib.integrate_angular_velocity(
+                R0, omega, [dt], degrees=degrees, frame="space" if space else "body"
+            ),
+        ),
+    ):
+        try:
+            expected = batch()
+        except ValueError as error:  # a turn beyond the range of floats: the same refusal
+            with pytest.raises(ValueError) as caught:
+                single()
+            assert str(caught.value) == str(error).replace(" at index (0,)", "")
+            continue
+        assert_ulp(single(), expected)
