@@ -93,16 +93,33 @@ def rotate_points(
             )
         if finite:
             return turned
-    matrices = as_rotations(R, "R", check)
-    # Finiteness of the points is checked on the result, in the same pass: each coordinate of
-    # a point enters the result through a nonzero entry of its column of R (a rotation has no
-    # zero column), so a NaN or an infinity in a point makes the result's sum NaN or infinite.
-    # Only then, or for unchecked matrices, are the points searched, by the usual check.
-    checked_on_result = check.validate or check.repair
-    vectors = as_vectors(points, "points", finite=not checked_on_result)
+    # Finiteness is read from the result, in the same pass, where that is sound: with IEEE
+    # arithmetic a NaN or an infinity among the operands of a product makes it NaN or infinite
+    # (0 · ∞ is NaN), so the sum of the result shows it. einsum, over a stack of matrices,
+    # multiplies every pair; the BLAS product of a single matrix might skip the zero entries
+    # of R, so there each column of R must have a nonzero entry (every rotation's does) for a
+    # point to show. Only when the result is not finite are the arguments searched, by the
+    # usual checks, which word the message; unchecked stacks of matrices are searched then too.
+    unchecked = not (check.validate or check.repair)
+    matrices = as_matrix_stack(R, "R", finite=False) if unchecked else as_rotations(R, "R", check)
+    if unchecked and matrices.ndim == 2:
+        as_matrix_stack(R, "R")  # nine numbers: checked at once
+    deferred = unchecked and matrices.ndim > 2
+
+    def check_matrices() -> None:
+        if deferred:
+            as_matrix_stack(R, "R")  # raises for a NaN or an infinity among the matrices
+
+    shown = matrices.ndim > 2 or bool(np.all(np.any(matrices != 0.0, axis=0)))
+    try:
+        vectors = as_vectors(points, "points", finite=not shown)
+    except (TypeError, ValueError):
+        check_matrices()  # the matrices' errors come first, as always
+        raise
     try:
         np.broadcast_shapes(matrices.shape[:-2], vectors.shape[:-1])
     except ValueError:
+        check_matrices()
         as_vectors(points, "points")  # a NaN or an infinity is reported first, as always
         raise ValueError(
             f"R with shape {matrices.shape} and points with shape {vectors.shape} do not "
@@ -113,8 +130,8 @@ def rotate_points(
         rotated, finite = _rotated(matrices, vectors)
     if finite:
         return rotated
-    if checked_on_result:
-        as_vectors(points, "points")  # raises for a NaN or an infinity among the points
+    check_matrices()
+    as_vectors(points, "points")  # raises for a NaN or an infinity among the points
     bad = overflowed(rotated)
     if bad.size:
         lead = rotated.shape[:-1]
