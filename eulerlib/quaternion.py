@@ -209,6 +209,12 @@ def quaternion_to_matrix(q: ArrayLike, *, scalar_first: bool = False) -> NDArray
     single = _one_quaternion_entries(q, first)
     if single is not None:
         return _scalar.as_array(single, (3, 3))
+    few = _scalar.small_batch(q, (4,))
+    if few is not None:  # a few quaternions, one after another in Python floats
+        order = _ORDER[first]
+        matrices = [quaternion_to_entries(*(row[i] for i in order)) for row in few]
+        if all(m is not None for m in matrices):
+            return np.array(matrices).reshape(len(few), 3, 3)
     quaternions = _as_quaternions(q, "q")
     lead = quaternions.shape[:-1]
     out = np.empty((math.prod(lead), 9))
@@ -278,6 +284,13 @@ def matrix_to_quaternion(
     single = _scalar.rotation(R, check)
     if single is not None:
         return _one_stored(normalized(entries_to_quaternion(single)), first)
+    few = _scalar.small_batch(R, (3, 3)) if not check.repair else None
+    if few is not None and (
+        not check.validate or all(_scalar.is_rotation(row, check.atol) for row in few)  # type: ignore[arg-type]
+    ):  # a few matrices, one after another in Python floats
+        stored = _STORED[first]
+        quaternions = [normalized(entries_to_quaternion(row)) for row in few]  # type: ignore[arg-type]
+        return np.array([[q[i] for i in stored] for q in quaternions])
     matrices = as_matrix_stack(R, "R")
     lead = matrices.shape[:-2]
     out = np.empty((math.prod(lead), 4))

@@ -328,3 +328,25 @@ def test_slerp_and_integration(t: float, dt: float, pick: int, degrees: bool, sp
             assert str(caught.value) == str(error).replace(" at index (0,)", "")
             continue
         assert_ulp(single(), expected)
+
+
+@pytest.mark.parametrize("count", [2, 7, 16])
+def test_small_batches_of_quaternions_and_matrices(count: int) -> None:
+    """Up to ``SMALL_BATCH`` quaternions or matrices take the path in Python floats, one
+    after another; a list of arrays takes the array path."""
+    for start in range(0, len(MATRICES) - count, count):
+        R = np.array(MATRICES[start : start + count])
+        for first in (False, True):
+            q = eulerlib.matrix_to_quaternion(R, scalar_first=first)
+            assert_ulp(q, eulerlib.matrix_to_quaternion(list(R), scalar_first=first)[np.newaxis])
+            assert_ulp(
+                eulerlib.quaternion_to_matrix(q, scalar_first=first),
+                eulerlib.quaternion_to_matrix(list(q), scalar_first=first)[np.newaxis],
+            )
+    bad = np.array(MATRICES[:count])
+    bad[-1] *= 1.001
+    with pytest.raises(ValueError) as few:
+        eulerlib.matrix_to_quaternion(bad)
+    with pytest.raises(ValueError) as many:
+        eulerlib.matrix_to_quaternion(list(bad))
+    assert str(few.value) == str(many.value)
