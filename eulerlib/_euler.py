@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -17,6 +18,9 @@ from eulerlib._blocks import block_slices
 from eulerlib._conventions import Convention
 from eulerlib._euler_kernels import fill_matrices, intrinsic_angles
 from eulerlib._lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
+from eulerlib._scalar import as_array, degrees_of, rotation
+from eulerlib._scalar_kernels import Nine
+from eulerlib._scalar_kernels import intrinsic_angles as one_intrinsic
 from eulerlib._validation import RotationCheck, rotation_entry_blocks
 
 
@@ -73,3 +77,26 @@ def entry_blocks_to_angles(
     if degrees:
         np.degrees(angles, out=angles)
     return angles.reshape(*lead, 3)
+
+
+def entries_to_angles(
+    entries: Nine, convention: Convention, degrees: bool
+) -> NDArray[np.float64] | None:
+    """Euler angles, shape ``(3,)``, of one checked rotation given by its nine entries, in
+    Python floats; None at gimbal lock, where the array path applies the policy and warns."""
+    angles = one_intrinsic(
+        entries, convention.parsed, convention.zeroes_intrinsic_first, GIMBAL_LOCK_TOLERANCE
+    )
+    if angles is None:
+        return None
+    ordered = convention.from_intrinsic(angles)
+    return as_array(degrees_of(ordered) if degrees else ordered, (3,))
+
+
+def one_matrix_to_angles(
+    R: Any, convention: Convention, check: RotationCheck, degrees: bool
+) -> NDArray[np.float64] | None:
+    """:func:`matrices_to_angles` for a single plain rotation matrix in Python floats; None
+    for anything else (see :mod:`eulerlib._scalar`)."""
+    entries = rotation(R, check)
+    return None if entries is None else entries_to_angles(entries, convention, degrees)

@@ -110,6 +110,26 @@ def lock_distance(entries: NDArray[np.float64], parsed: Sequence) -> NDArray[np.
     return middle_angle(m, parsed.proper)[1]
 
 
+def direction(
+    y: NDArray[np.float64], x: NDArray[np.float64], locked: NDArray[np.bool_]
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """``(sin, cos)`` of ``atan2(y, x)`` as ``(y, x) / sqrt(x² + y²)``, and ``(0, 1)`` where
+    ``locked`` (the angle set to 0) or where ``x = y = 0``.
+
+    The same numbers as the sine and cosine of the angle to a unit in the last place, for a
+    square root and two divisions instead of a sine and a cosine, which cost about ten times
+    as much in numpy (its float64 ``sin`` and ``cos`` are not vectorized).
+    """
+    length = _length(y, x)
+    empty = locked | (length == 0.0)
+    length[empty] = 1.0
+    sine = y / length
+    cosine = x / length
+    sine[empty] = 0.0
+    cosine[empty] = 1.0
+    return sine, cosine
+
+
 def intrinsic_angles(
     entries: NDArray[np.float64], parsed: Sequence, zero_first: bool, tolerance: float
 ) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
@@ -124,23 +144,26 @@ def intrinsic_angles(
     m, third_sign = relabelled(entries, parsed)
     middle, distance = middle_angle(m, parsed.proper)
     locked = distance <= tolerance
+    # the outer angle read from its own ratio (y, x), 0 at lock
+    if parsed.proper:
+        y, x = (m(1, 0), -m(2, 0)) if zero_first else (m(0, 1), m(0, 2))
+    else:
+        y, x = (-m(1, 2), m(2, 2)) if zero_first else (-m(0, 1), m(0, 0))
+    read = np.where(locked, 0.0, np.arctan2(y, x))
+    sine, cosine = direction(y, x, locked)
     if parsed.proper:  # M = R_x(a) R_y(b) R_x(c)
         if zero_first:
-            first = np.where(locked, 0.0, np.arctan2(m(1, 0), -m(2, 0)))
-            s1, c1 = np.sin(first), np.cos(first)
+            first, s1, c1 = read, sine, cosine
             third = np.arctan2(-(c1 * m(1, 2) + s1 * m(2, 2)), c1 * m(1, 1) + s1 * m(2, 1))
         else:
-            third = np.where(locked, 0.0, np.arctan2(m(0, 1), m(0, 2)))
-            s3, c3 = np.sin(third), np.cos(third)
+            third, s3, c3 = read, sine, cosine
             first = np.arctan2(c3 * m(2, 1) - s3 * m(2, 2), c3 * m(1, 1) - s3 * m(1, 2))
     else:  # M = R_x(a) R_y(b) R_z(c)
         if zero_first:
-            first = np.where(locked, 0.0, np.arctan2(-m(1, 2), m(2, 2)))
-            s1, c1 = np.sin(first), np.cos(first)
+            first, s1, c1 = read, sine, cosine
             third = np.arctan2(c1 * m(1, 0) + s1 * m(2, 0), c1 * m(1, 1) + s1 * m(2, 1))
         else:
-            third = np.where(locked, 0.0, np.arctan2(-m(0, 1), m(0, 0)))
-            s3, c3 = np.sin(third), np.cos(third)
+            third, s3, c3 = read, sine, cosine
             first = np.arctan2(s3 * m(2, 0) + c3 * m(2, 1), s3 * m(1, 0) + c3 * m(1, 1))
         third = third * third_sign
     angles = np.stack([first, middle, third], axis=-1)

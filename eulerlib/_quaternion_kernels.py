@@ -13,7 +13,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from eulerlib._euler_kernels import frame
-from eulerlib._length_kernels import TINY, lengths
+from eulerlib._length_kernels import TINY, lengths, squared_lengths
 from eulerlib._sequences import Sequence
 from eulerlib._trig import half_angle_pair
 
@@ -97,9 +97,11 @@ def normalize(q: Array) -> None:
     For quaternions near unit length, such as those of matrices that are rotations within a
     tolerance, the length is ``sqrt`` of a sum of four squares without overflow or underflow,
     and each component is divided once, so the result has length 1 to a unit or two in the last
-    place; a quaternion whose length rounds to 1 is left as it is.
+    place; a quaternion whose length rounds to 1 is left as it is. The squares are summed in
+    order, ``((w² + x²) + y²) + z²``, for any number of quaternions (``einsum`` sums a single
+    column in another order), so that one quaternion gets the same bits as many.
     """
-    q /= np.sqrt(np.einsum("ij,ij->j", q, q))
+    q /= np.sqrt(squared_lengths(q))
 
 
 def quaternions_to_entries(q: Array | tuple[Array, Array, Array, Array], out: Array) -> Array:

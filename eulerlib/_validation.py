@@ -212,9 +212,9 @@ def as_float_array(value: ArrayLike, name: str, finite: bool = True) -> NDArray[
     return array
 
 
-def as_vectors(value: ArrayLike, name: str) -> NDArray[np.float64]:
-    """``value`` as a float array of shape ``(..., 3)``."""
-    array = as_float_array(value, name)
+def as_vectors(value: ArrayLike, name: str, finite: bool = True) -> NDArray[np.float64]:
+    """``value`` as a float array of shape ``(..., 3)``; ``finite`` as in :func:`as_float_array`."""
+    array = as_float_array(value, name) if finite else as_float_array(value, name, finite=False)
     if array.ndim == 0 or array.shape[-1] != 3:
         raise ValueError(f"{name} must have shape (..., 3), got shape {array.shape}")
     return array

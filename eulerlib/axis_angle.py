@@ -48,6 +48,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib import _scalar
 from eulerlib._blocks import block_slices
 from eulerlib._broadcast import broadcast_blocks, broadcast_shape
 from eulerlib._length_kernels import lengths
@@ -60,10 +61,19 @@ from eulerlib._quaternion_kernels import (
     rotvecs_to_entries,
     unit_axes,
 )
+from eulerlib._scalar_kernels import (
+    axis_angle_to_entries,
+    entries_to_quaternion,
+    relative_angle,
+    rotvec_to_entries,
+    vector_part,
+)
+from eulerlib._scalar_kernels import rotation_angle as one_rotation_angle
 from eulerlib._trig import half_angle_pair
 from eulerlib._unit import refuse_overlong, scaled_to_unit_size
 from eulerlib._validation import (
     ROTATION_ATOL,
+    RotationCheck,
     as_float_array,
     as_matrix_stack,
     as_rotations,
@@ -99,6 +109,23 @@ class AxisAngle(NamedTuple):
 
     axis: NDArray[np.float64]
     angle: NDArray[np.float64]
+
+
+def _one_axis_angle(
+    R: ArrayLike, check: RotationCheck
+) -> tuple[tuple[float, float, float], float] | None:
+    """Unit axis and angle (radians) of a single plain rotation matrix in Python floats, as the
+    array path computes them; None for anything else, and for the identity and the turns so
+    small that a length needs rescaling (see :mod:`eulerlib._scalar`)."""
+    entries = _scalar.rotation(R, check)
+    if entries is None:
+        return None
+    angle = one_rotation_angle(entries)
+    part = vector_part(entries_to_quaternion(entries))
+    if angle is None or part is None:
+        return None
+    (x, y, z), length = part
+    return (x / length, y / length, z / length), angle
 
 
 def axis_angle_to_matrix(
@@ -148,6 +175,11 @@ def axis_angle_to_matrix(
     (5, 3, 3)
     """
     in_degrees = check_flag(degrees, "degrees")
+    one_axis, one_angle = _scalar.vector(axis), _scalar.number(angle)
+    if one_axis is not None and one_angle is not None:
+        one_entries = axis_angle_to_entries(one_axis, one_angle, in_degrees)
+        if one_entries is not None:  # None for a zero axis, which the array path refuses
+            return _scalar.as_array(one_entries, (3, 3))
     axes = as_vectors(axis, "axis")
     angles = as_float_array(angle, "angle")
     axis_lead = axes.shape[:-1]
@@ -225,6 +257,13 @@ def matrix_to_axis_angle(
     """
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    single = _one_axis_angle(R, check)
+    if single is not None:
+        one_axis, one_angle = single
+        return AxisAngle(
+            _scalar.as_array(one_axis, (3,)),
+            np.array(math.degrees(one_angle) if in_degrees else one_angle),
+        )
     matrices = as_matrix_stack(R, "R")
     lead = matrices.shape[:-2]
     count = math.prod(lead)
@@ -294,6 +333,10 @@ def rotvec_to_matrix(v: ArrayLike, *, degrees: bool = False) -> NDArray[np.float
     not a number
     """
     in_degrees = check_flag(degrees, "degrees")
+    single = _scalar.vector(v)
+    entries = None if single is None else rotvec_to_entries(single, in_degrees)
+    if entries is not None:  # None for the zero vector and lengths that need rescaling
+        return _scalar.as_array(entries, (3, 3))
     vectors = as_vectors(v, "v")
     flat = vectors.reshape(-1, 3)
     out = np.empty((flat.shape[0], 9))
@@ -349,6 +392,16 @@ def matrix_to_rotvec(
     """
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    single = _scalar.rotation(R, check)
+    if single is not None:
+        turn = one_rotation_angle(single)
+        part = vector_part(entries_to_quaternion(single))
+        if turn is not None and part is not None:
+            if in_degrees:
+                turn = math.degrees(turn)
+            (x, y, z), length = part
+            factor = turn / length
+            return _scalar.as_array((x * factor, y * factor, z * factor), (3,))
     matrices = as_matrix_stack(R, "R")
     lead = matrices.shape[:-2]
     out = np.empty((math.prod(lead), 3))
@@ -409,6 +462,10 @@ def rotation_angle(
     """
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    single = _scalar.rotation(R, check)
+    turn = None if single is None else one_rotation_angle(single)
+    if turn is not None:
+        return np.array(math.degrees(turn) if in_degrees else turn)
     matrices = as_matrix_stack(R, "R")
     lead = matrices.shape[:-2]
     angles = np.empty(math.prod(lead))
@@ -471,6 +528,12 @@ def angle_between(
     """
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    one_first = _scalar.rotation(R0, check)
+    one_second = None if one_first is None else _scalar.rotation(R1, check)
+    if one_first is not None and one_second is not None:
+        angle = relative_angle(one_first, one_second)
+        if angle is not None:
+            return np.array(math.degrees(angle) if in_degrees else angle)
     first = as_rotations(R0, "R0", check)
     second = as_rotations(R1, "R1", check)
     lead0, lead1 = first.shape[:-2], second.shape[:-2]

@@ -17,9 +17,12 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib import _scalar
 from eulerlib._blocks import block_slices
+from eulerlib._euler import entries_to_angles
 from eulerlib._euler_kernels import fill_matrices, intrinsic_angles, relabel_into
 from eulerlib._lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
+from eulerlib._scalar_kernels import angles_to_entries
 from eulerlib._validation import as_vectors, check_flag, matrix_entries
 from eulerlib.conventions import Convention, get_convention
 from eulerlib.up_axis import up_axis_matrix
@@ -86,6 +89,12 @@ def convert_angles(
     in_degrees = check_flag(degrees, "degrees")
     warn_lock = check_flag(warn, "warn")
     move = check_flag(relabel, "relabel")
+    single = None if move else _scalar.vector(angles)
+    if single is not None:  # one rotation, in Python floats; None at lock (the array path warns)
+        entries = angles_to_entries(source.to_intrinsic(single), source.parsed, in_degrees)
+        converted = entries_to_angles(entries, target, in_degrees)
+        if converted is not None:
+            return converted
     values = as_vectors(angles, "angles")
     P = None
     if move:

@@ -24,6 +24,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib import _scalar
+from eulerlib._scalar_kernels import sin_cos as one_sin_cos
 from eulerlib._trig import sin_cos
 from eulerlib._validation import as_float_array, check_flag
 from eulerlib.sequences import parse_axis
@@ -70,9 +72,16 @@ def elementary_rotation(
     """
     index = parse_axis(axis)
     in_degrees = check_flag(degrees, "degrees")
+    i, j = (index + 1) % 3, (index + 2) % 3
+    single = _scalar.number(angle)
+    if single is not None:  # one angle: the same numbers in Python floats
+        (sine, *_), (cosine, *_) = one_sin_cos((single, 0.0, 0.0), in_degrees)
+        entries = [0.0] * 9
+        entries[4 * index], entries[4 * i], entries[4 * j] = 1.0, cosine, cosine
+        entries[3 * i + j], entries[3 * j + i] = 0.0 - sine, sine
+        return _scalar.as_array(tuple(entries), (3, 3))
     theta = as_float_array(angle, "angle")
     s, c = sin_cos(theta, in_degrees)
-    i, j = (index + 1) % 3, (index + 2) % 3
     R = np.zeros((*theta.shape, 3, 3))
     R[..., index, index] = 1.0
     R[..., i, i] = c

@@ -52,7 +52,9 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._euler import angles_to_matrices, matrices_to_angles
+from eulerlib import _scalar
+from eulerlib._euler import angles_to_matrices, matrices_to_angles, one_matrix_to_angles
+from eulerlib._scalar_kernels import angles_to_entries
 from eulerlib._validation import (
     ROTATION_ATOL,
     as_matrix_stack,
@@ -114,6 +116,10 @@ def euler_to_matrix(
     """
     convention = get_convention(seq)
     in_degrees = check_flag(degrees, "degrees")
+    single = _scalar.vector(angles)
+    if single is not None:  # one rotation: the same formulas in Python floats
+        entries = angles_to_entries(convention.to_intrinsic(single), convention.parsed, in_degrees)
+        return _scalar.as_array(entries, (3, 3))
     values = as_vectors(angles, "angles")
     return angles_to_matrices(values, convention, in_degrees)
 
@@ -199,5 +205,8 @@ def matrix_to_euler(
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
     warn_lock = check_flag(warn, "warn")
+    single = one_matrix_to_angles(R, convention, check, in_degrees)
+    if single is not None:
+        return single
     matrices = as_matrix_stack(R, "R")
     return matrices_to_angles(matrices, convention, check, in_degrees, warn_lock)

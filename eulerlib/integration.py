@@ -37,9 +37,11 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib import _scalar
 from eulerlib._broadcast import broadcast_blocks, broadcast_shape, selected_index
 from eulerlib._length_kernels import lengths
 from eulerlib._quaternion_kernels import rotvecs_to_entries
+from eulerlib._scalar_kernels import rotvec_to_entries
 from eulerlib._unit import refuse_overlong
 from eulerlib._validation import (
     ROTATION_ATOL,
@@ -131,6 +133,21 @@ def integrate_angular_velocity(
     in_space = check_choice(frame, "frame", FRAMES) == "space"
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    one_R, one_omega, one_dt = _scalar.rotation(R, check), _scalar.vector(omega), None
+    if one_R is not None and one_omega is not None:
+        one_dt = _scalar.number(dt)
+    if one_R is not None and one_omega is not None and one_dt is not None:
+        with np.errstate(over="ignore", invalid="ignore"):
+            turn = (one_omega[0] * one_dt, one_omega[1] * one_dt, one_omega[2] * one_dt)
+        one_step = rotvec_to_entries(turn, in_degrees) if _scalar.finite(turn) else None
+        if one_step is not None:  # one step in Python floats, then the same product
+            step = _scalar.as_array(one_step, (1, 3, 3))
+            start = _scalar.as_array(one_R, (1, 3, 3))
+            single: NDArray[np.float64] = (
+                np.matmul(step, start) if in_space else np.matmul(start, step)
+            )
+            result: NDArray[np.float64] = single[0]
+            return result
     matrices = as_rotations(R, "R", check)
     rates = as_vectors(omega, "omega")
     steps = as_float_array(dt, "dt")

@@ -33,6 +33,7 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib import _scalar
 from eulerlib._blocks import BLOCK_SIZE
 from eulerlib._broadcast import broadcast_blocks, broadcast_shape
 from eulerlib._length_kernels import TINY, lengths
@@ -42,6 +43,7 @@ from eulerlib._quaternion_kernels import (
     quaternions_to_entries,
     transposed_product,
 )
+from eulerlib._scalar_kernels import slerp_entries
 from eulerlib._validation import (
     ROTATION_ATOL,
     _index_text,
@@ -118,6 +120,12 @@ def slerp(
     array(180.)
     """
     check = rotation_check(validate, repair, atol)
+    one_first, one_t = _scalar.rotation(R0, check), _scalar.number(t)
+    one_second = None if one_first is None else _scalar.rotation(R1, check)
+    if one_first is not None and one_second is not None and one_t is not None:
+        one_entries = slerp_entries(one_first, one_second, one_t)
+        if one_entries is not None:  # one pair at one fraction, in Python floats
+            return _scalar.as_array(one_entries, (3, 3))
     first = as_rotations(R0, "R0", check)
     second = as_rotations(R1, "R1", check)
     fractions = as_float_array(t, "t")

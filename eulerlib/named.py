@@ -26,7 +26,9 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib._euler import angles_to_matrices, matrices_to_angles
+from eulerlib import _scalar
+from eulerlib._euler import angles_to_matrices, matrices_to_angles, one_matrix_to_angles
+from eulerlib._scalar_kernels import angles_to_entries
 from eulerlib._validation import (
     ROTATION_ATOL,
     as_matrix_stack,
@@ -67,6 +69,11 @@ def _named_to_matrix(
 ) -> NDArray[np.float64]:
     """The matrices of three separately given angles in a named convention."""
     in_degrees = check_flag(degrees, "degrees")
+    a, b, c = (_scalar.number(value) for value in values)
+    if a is not None and b is not None and c is not None:  # one rotation, in Python floats
+        intrinsic = convention.to_intrinsic((a, b, c))
+        entries = angles_to_entries(intrinsic, convention.parsed, in_degrees)
+        return _scalar.as_array(entries, (3, 3))
     stacked = stack_angles(dict(zip(convention.angle_names, values, strict=True)))
     return angles_to_matrices(stacked, convention, in_degrees)
 
@@ -84,8 +91,12 @@ def _matrix_to_named(
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
     warn_lock = check_flag(warn, "warn")
-    matrices = as_matrix_stack(R, "R")
-    angles = matrices_to_angles(matrices, convention, check, in_degrees, warn_lock)
+    single = one_matrix_to_angles(R, convention, check, in_degrees)
+    if single is not None:
+        angles = single
+    else:
+        matrices = as_matrix_stack(R, "R")
+        angles = matrices_to_angles(matrices, convention, check, in_degrees, warn_lock)
     first, middle, third = (np.array(angles[..., i]) for i in range(3))  # 0-d for one matrix
     return first, middle, third
 

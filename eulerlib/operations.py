@@ -10,11 +10,13 @@ takes the same ``validate``, ``repair`` and ``atol`` keywords.
 
 from __future__ import annotations
 
+import math
 from functools import reduce
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib import _scalar
 from eulerlib._blocks import block_slices
 from eulerlib._overflow import overflowed, rescaled
 from eulerlib._validation import (
@@ -82,18 +84,54 @@ def rotate_points(
     array([[ 0.,  1.,  0.],
            [-2.,  0.,  0.]])
     """
-    matrices = as_rotations(R, "R", rotation_check(validate, repair, atol))
-    vectors = as_vectors(points, "points")
+    check = rotation_check(validate, repair, atol)
+    one_R, one_point = _scalar.rotation(R, check), _scalar.vector(points)
+    if one_R is not None and one_point is not None:  # one point: checked in Python floats
+        with np.errstate(over="ignore", invalid="ignore"):  # a huge point: the array path
+            turned, finite = _rotated(
+                _scalar.as_array(one_R, (3, 3)), _scalar.as_array(one_point, (3,))
+            )
+        if finite:
+            return turned
+    # Finiteness is read from the result, in the same pass, where that is sound: with IEEE
+    # arithmetic a NaN or an infinity among the operands of a product makes it NaN or infinite
+    # (0 · ∞ is NaN), so the sum of the result shows it. einsum, over a stack of matrices,
+    # multiplies every pair; the BLAS product of a single matrix might skip the zero entries
+    # of R, so there each column of R must have a nonzero entry (every rotation's does) for a
+    # point to show. Only when the result is not finite are the arguments searched, by the
+    # usual checks, which word the message; unchecked stacks of matrices are searched then too.
+    unchecked = not (check.validate or check.repair)
+    matrices = as_matrix_stack(R, "R", finite=False) if unchecked else as_rotations(R, "R", check)
+    if unchecked and matrices.ndim == 2:
+        as_matrix_stack(R, "R")  # nine numbers: checked at once
+    deferred = unchecked and matrices.ndim > 2
+
+    def check_matrices() -> None:
+        if deferred:
+            as_matrix_stack(R, "R")  # raises for a NaN or an infinity among the matrices
+
+    shown = matrices.ndim > 2 or bool(np.all(np.any(matrices != 0.0, axis=0)))
+    try:
+        vectors = as_vectors(points, "points", finite=not shown)
+    except (TypeError, ValueError):
+        check_matrices()  # the matrices' errors come first, as always
+        raise
     try:
         np.broadcast_shapes(matrices.shape[:-2], vectors.shape[:-1])
     except ValueError:
+        check_matrices()
+        as_vectors(points, "points")  # a NaN or an infinity is reported first, as always
         raise ValueError(
             f"R with shape {matrices.shape} and points with shape {vectors.shape} do not "
             "broadcast: their leading axes (all but the last two of R, all but the last of "
             "points) must be compatible"
         ) from None
     with np.errstate(over="ignore", invalid="ignore"):  # huge points: redone below
-        rotated = _rotated(matrices, vectors)
+        rotated, finite = _rotated(matrices, vectors)
+    if finite:
+        return rotated
+    check_matrices()
+    as_vectors(points, "points")  # raises for a NaN or an infinity among the points
     bad = overflowed(rotated)
     if bad.size:
         lead = rotated.shape[:-1]
@@ -105,7 +143,7 @@ def rotate_points(
             on_points = np.broadcast_to(vectors, (*lead, 3))[where]
         flat = rotated.reshape(-1, 3)  # a view: both layouts of _rotated allow it
         flat[bad] = rescaled(
-            lambda scale: _rotated(on_R, on_points * scale),
+            lambda scale: _rotated(on_R, on_points * scale)[0],
             bad,
             "points",
             "the rotated point",
@@ -114,14 +152,23 @@ def rotate_points(
     return rotated
 
 
-def _rotated(matrices: NDArray[np.float64], vectors: NDArray[np.float64]) -> NDArray[np.float64]:
-    """``R p`` for each point (rows of ``vectors``), broadcast over the leading axes."""
-    if matrices.ndim == 2:  # one rotation for all points: a single BLAS product, R (3, n)
-        columns = vectors.reshape(-1, 3).T
-        turned: NDArray[np.float64] = (matrices @ columns).T.reshape(vectors.shape)
-        return turned
-    rotated: NDArray[np.float64] = (matrices @ vectors[..., np.newaxis])[..., 0]
-    return rotated
+def _rotated(
+    matrices: NDArray[np.float64], vectors: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], bool]:
+    """``R p`` for each point (rows of ``vectors``), broadcast over the leading axes, and
+    whether the whole result is finite (one sum, taken while each block is in the cache)."""
+    if matrices.ndim == 2:  # one rotation for all points: a BLAS product per block
+        flat = vectors.reshape(-1, 3)
+        out = np.empty(flat.shape)
+        total = 0.0
+        for block in block_slices(flat.shape[0]):
+            part = out[block]
+            np.matmul(matrices, flat[block].T, out=part.T)
+            total += float(np.sum(part))
+        return out.reshape(vectors.shape), math.isfinite(total)
+    # a matrix per point: einsum's loop over three products beats matmul's set-up per matrix
+    rotated: NDArray[np.float64] = np.einsum("...ij,...j->...i", matrices, vectors)
+    return rotated, math.isfinite(float(np.sum(rotated)))
 
 
 def invert(
@@ -150,7 +197,12 @@ def invert(
     >>> np.allclose(invert(R) @ R, np.eye(3))
     True
     """
-    matrices = as_rotations(R, "R", rotation_check(validate, repair, atol))
+    check = rotation_check(validate, repair, atol)
+    single = _scalar.rotation(R, check)
+    if single is not None:
+        a, b, c, d, e, f, g, h, i = single
+        return _scalar.as_array((a, d, g, b, e, h, c, f, i), (3, 3))
+    matrices = as_rotations(R, "R", check)
     transposed: NDArray[np.float64] = np.swapaxes(matrices, -1, -2).copy()
     return transposed
 
@@ -232,6 +284,11 @@ def compose(
     if not rotations:
         raise TypeError("compose() needs at least one rotation matrix")
     check = rotation_check(validate, repair, atol)
+    singles = [_scalar.rotation(R, check) for R in rotations]
+    if all(single is not None for single in singles):  # single matrices, checked in floats
+        factors = [_scalar.as_array(single, (3, 3)) for single in singles if single is not None]
+        product_of_singles: NDArray[np.float64] = reduce(np.matmul, factors)
+        return product_of_singles
     matrices = [as_rotations(R, f"rotation {n + 1}", check) for n, R in enumerate(rotations)]
     try:
         np.broadcast_shapes(*(m.shape for m in matrices))

@@ -54,14 +54,25 @@ from collections.abc import Iterator
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib import _scalar
 from eulerlib._blocks import block_slices
-from eulerlib._euler import entry_blocks_to_angles
+from eulerlib._euler import entries_to_angles, entry_blocks_to_angles
 from eulerlib._length_kernels import out_of_range
 from eulerlib._quaternion_kernels import (
     entries_to_quaternions,
     euler_to_quaternions,
     normalize,
     quaternions_to_entries,
+)
+from eulerlib._scalar_kernels import (
+    Four,
+    Nine,
+    entries_to_quaternion,
+    normalized,
+    quaternion_to_entries,
+)
+from eulerlib._scalar_kernels import (
+    euler_to_quaternion as one_euler_to_quaternion,
 )
 from eulerlib._unit import scaled_to_unit_size
 from eulerlib._validation import (
@@ -125,6 +136,21 @@ def _quaternion_entry_blocks(
         yield block, entries
 
 
+def _one_quaternion_entries(q: object, scalar_first: bool) -> Nine | None:
+    """The matrix entries of a single plain quaternion in Python floats, or None (a zero,
+    tiny or huge quaternion, or anything but one plain quaternion: the array path)."""
+    single = _scalar.quaternion(q)
+    if single is None:
+        return None
+    w, x, y, z = (single[i] for i in _ORDER[scalar_first])
+    return quaternion_to_entries(w, x, y, z)
+
+
+def _one_stored(q: Four, scalar_first: bool) -> NDArray[np.float64]:
+    """One quaternion ``(w, x, y, z)`` of Python floats as a stored quaternion ``(4,)``."""
+    return _scalar.as_array(tuple(q[i] for i in _STORED[scalar_first]), (4,))
+
+
 def _stored(q: NDArray[np.float64], scalar_first: bool) -> NDArray[np.float64]:
     """Rows w, x, y, z of a block ``(4, n)`` as stored quaternions ``(n, 4)``."""
     columns: NDArray[np.float64] = q[list(_STORED[scalar_first])].T
@@ -180,6 +206,15 @@ def quaternion_to_matrix(q: ArrayLike, *, scalar_first: bool = False) -> NDArray
            [0., 0., 1.]])
     """
     first = check_flag(scalar_first, "scalar_first")
+    single = _one_quaternion_entries(q, first)
+    if single is not None:
+        return _scalar.as_array(single, (3, 3))
+    few = _scalar.small_batch(q, (4,))
+    if few is not None:  # a few quaternions, one after another in Python floats
+        order = _ORDER[first]
+        matrices = [quaternion_to_entries(*(row[i] for i in order)) for row in few]
+        if all(m is not None for m in matrices):
+            return np.array(matrices).reshape(len(few), 3, 3)
     quaternions = _as_quaternions(q, "q")
     lead = quaternions.shape[:-1]
     out = np.empty((math.prod(lead), 9))
@@ -246,6 +281,16 @@ def matrix_to_quaternion(
     """
     first = check_flag(scalar_first, "scalar_first")
     check = rotation_check(validate, repair, atol)
+    single = _scalar.rotation(R, check)
+    if single is not None:
+        return _one_stored(normalized(entries_to_quaternion(single)), first)
+    few = _scalar.small_batch(R, (3, 3)) if not check.repair else None
+    if few is not None and (
+        not check.validate or all(_scalar.is_rotation(row, check.atol) for row in few)  # type: ignore[arg-type]
+    ):  # a few matrices, one after another in Python floats
+        stored = _STORED[first]
+        quaternions = [normalized(entries_to_quaternion(row)) for row in few]  # type: ignore[arg-type]
+        return np.array([[q[i] for i in stored] for q in quaternions])
     matrices = as_matrix_stack(R, "R")
     lead = matrices.shape[:-2]
     out = np.empty((math.prod(lead), 4))
@@ -304,6 +349,10 @@ def euler_to_quaternion(
     convention = get_convention(seq)
     in_degrees = check_flag(degrees, "degrees")
     first = check_flag(scalar_first, "scalar_first")
+    single = _scalar.vector(angles)
+    if single is not None:
+        intrinsic = convention.to_intrinsic(single)
+        return _one_stored(one_euler_to_quaternion(intrinsic, convention.parsed, in_degrees), first)
     values = as_vectors(angles, "angles")
     parsed = convention.parsed
     flat = convention.to_intrinsic(values.reshape(-1, 3))
@@ -377,6 +426,11 @@ def quaternion_to_euler(
     in_degrees = check_flag(degrees, "degrees")
     first = check_flag(scalar_first, "scalar_first")
     warn_lock = check_flag(warn, "warn")
+    entries = _one_quaternion_entries(q, first)
+    if entries is not None:
+        angles = entries_to_angles(entries, convention, in_degrees)
+        if angles is not None:  # None at gimbal lock: the array path warns
+            return angles
     quaternions = _as_quaternions(q, "q")
     blocks = _quaternion_entry_blocks(quaternions, "q", first)
     return entry_blocks_to_angles(blocks, quaternions.shape[:-1], convention, in_degrees, warn_lock)
