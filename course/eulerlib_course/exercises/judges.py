@@ -10,12 +10,19 @@ away:
   constraint (yaw = 0, a range), which is then enforced and named;
 * quaternions ``q`` and ``−q`` are the same rotation;
 * SymPy answers are judged by their value at random values of their symbols, so an answer that
-  differs from the reference only by simplification passes, and a wrong matrix is answered with
-  the one entry that differs;
+  differs from the reference only by simplification passes, whatever assumptions the learner's
+  symbols carry, and a wrong matrix is answered with the learner's first entry that is off;
 * the typical mistakes are recognised: degrees for radians, the transpose (the inverse), the
   reversed order (``AB`` for ``BA``, intrinsic for extrinsic), ``atan`` for ``atan2`` (an angle off
   by 180°), a sign error in one angle, scalar-first for scalar-last, the conjugate;
 * an exercise can add its own typical mistakes (:class:`Mistake`), each with its diagnosis.
+
+A judge is not an oracle that a search could follow: a wrong answer that matches no mistake gets
+the exercise's ``hint`` (where to look), never a side ("too large") or a distance; an answer
+within a coarse band of the reference (:data:`CLOSE_DEGREES`, :data:`CLOSE_RELATIVE`) is called
+*close*, the same words on every side of it. Tolerances are the library's ``ROTATION_ATOL`` for
+computed answers and :func:`rounded_to` for answers worked by hand to the digits asked. A choice
+comes with a computed part (:class:`ChoiceJudge`), so that trying the options passes nothing.
 """
 
 from __future__ import annotations
