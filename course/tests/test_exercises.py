@@ -279,7 +279,7 @@ def test_per_student_data_differ_between_students_and_from_the_teachers() -> Non
         assert np.array_equal(ada, again), f"{exercise.id}: the same student, other data"
         with as_student("ada"):
             judge = exercise.judge_for()
-        assert not np.allclose(
+        assert not np.array_equal(
             np.asarray(judge.reference, dtype=float),  # type: ignore[attr-defined]
             np.asarray(exercise.judge.reference, dtype=float),  # type: ignore[attr-defined]
         ), exercise.id
