@@ -495,6 +495,22 @@ def _same_symbols(value: Any, reference: Any) -> Any:
     return value.xreplace(swaps) if swaps else value
 
 
+def _as_shape_of(value: Any, reference: Any) -> Any:
+    """A row or column vector ``value`` in the shape of the vector ``reference`` (a vector
+    written as a row is the same vector as a column); anything else as it is."""
+    import sympy as sp
+
+    if (
+        isinstance(value, sp.MatrixBase)
+        and isinstance(reference, sp.MatrixBase)
+        and 1 in reference.shape
+        and 1 in value.shape
+        and len(value) == len(reference)
+    ):
+        return value.reshape(*reference.shape)
+    return value
+
+
 @dataclass(frozen=True)
 class ExpressionJudge(Judge):
     """A SymPy expression or matrix, judged by its value, so that any equivalent form passes.
@@ -516,6 +532,7 @@ class ExpressionJudge(Judge):
         ref = sp.sympify(self.reference)
         value = _same_symbols(read_expression(answer, self.what), ref)
         is_matrix = isinstance(ref, sp.MatrixBase)
+        value = _as_shape_of(value, ref)
         if is_matrix != isinstance(value, sp.MatrixBase) or (
             is_matrix and value.shape != ref.shape
         ):
@@ -526,12 +543,15 @@ class ExpressionJudge(Judge):
         if self.up_to_sign and _vanishes(value + ref):
             return correct(f"{self.what} is right (with the other sign, which is as good here)")
         for mistake in self.mistakes:
-            if _vanishes(value - sp.sympify(mistake.value)):
+            wrong = _as_shape_of(sp.sympify(mistake.value), ref)
+            if getattr(wrong, "shape", None) == getattr(ref, "shape", None) and _vanishes(
+                value - wrong
+            ):
                 return off(mistake.message)
         if _vanishes(value + ref):
             return off(f"{self.what} differs from the answer by its sign")
         if is_matrix:
-            if _vanishes(value.T - ref):
+            if ref.shape[0] == ref.shape[1] and _vanishes(value.T - ref):
                 return off(
                     f"{self.what} is the transpose of the answer: check the order of the "
                     "product, or active versus passive"
