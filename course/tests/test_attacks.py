@@ -122,16 +122,16 @@ def attack(exercise_id: str) -> None:
     elif isinstance(judge, (NumberJudge, ArrayJudge, AnglesJudge, QuaternionJudge)):
         search(exercise_id, judge, MINIMIZER_CHECKS)
     elif isinstance(judge, ExpressionJudge):
-        # a symbolic answer has no numbers to search; the attack tries the forms a guesser would
+        # a symbolic answer has no numbers to search; the attack tries what a guesser would
         import sympy as sp
 
-        for value in (0, 1, -1, sp.Matrix.eye(3)):
+        for value in (0, 1, -1, sp.eye(3), sp.zeros(3, 3), sp.Matrix([1, 0, 0])):
             text(exercise_id, value)
     else:  # pragma: no cover - a new kind of judge needs its attack here
         raise AssertionError(f"{exercise_id}: no attack for {type(judge).__name__}")
 
 
-@pytest.mark.parametrize(("exercise_id", "student"), itertools.product(KEY, STUDENTS))
+@pytest.mark.parametrize(("exercise_id", "student"), list(itertools.product(KEY, STUDENTS)))
 def test_an_attack_that_reads_only_the_feedback_fails(
     exercise_id: str, student: str | None
 ) -> None:

@@ -423,3 +423,15 @@ def test_predict_refuses_an_exercise_that_is_not_a_prediction() -> None:
 
     with pytest.raises(ValueError, match="not a prediction"):
         predict("05.1", [1, 2, 3])
+
+
+def test_a_vector_as_a_row_or_a_column_is_the_same_vector() -> None:
+    a = sp.Symbol("a", real=True)
+    judge = ExpressionJudge(
+        sp.Matrix([sp.cos(a), sp.sin(a), 0]),
+        mistakes=(Mistake(sp.Matrix([[sp.sin(a), sp.cos(a), 0]]), "sine and cosine swapped"),),
+    )
+    assert judge.judge(sp.Matrix([[sp.cos(a), sp.sin(a), 0]])).status == "correct"
+    assert "swapped" in judge.judge(sp.Matrix([sp.sin(a), sp.cos(a), 0])).message
+    assert "not a 3×1 matrix" in judge.judge(sp.eye(3)).message
+    assert judge.judge(sp.Matrix([1, 0, 0])).status == "off"

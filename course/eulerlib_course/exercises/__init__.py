@@ -9,6 +9,11 @@ The reference, the tolerance and the typical mistakes live here, in the answer k
 (:mod:`.key` and one module ``nbNN`` per notebook), never in a visible cell. Data the question
 gives comes from :func:`given`, so the exercise cell shows the data without showing how it was
 made. See :mod:`.judges` for what counts as equally right and which mistakes are diagnosed.
+
+An exercise can give each student data of their own (:mod:`.seeds`; ``student_name("ada")`` in
+the notebook); a prediction is recorded by its check and fixed once the cell that settles it has
+run (:mod:`.predictions`); graded mode checks only the form in the student's notebook
+(:mod:`.graded`) and grades with a key the students' side does not hold (:mod:`.keyless`).
 """
 
 from .feedback import Feedback

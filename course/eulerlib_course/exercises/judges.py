@@ -10,12 +10,19 @@ away:
   constraint (yaw = 0, a range), which is then enforced and named;
 * quaternions ``q`` and ``−q`` are the same rotation;
 * SymPy answers are judged by their value at random values of their symbols, so an answer that
-  differs from the reference only by simplification passes, and a wrong matrix is answered with
-  the one entry that differs;
+  differs from the reference only by simplification passes, whatever assumptions the learner's
+  symbols carry, and a wrong matrix is answered with the learner's first entry that is off;
 * the typical mistakes are recognised: degrees for radians, the transpose (the inverse), the
   reversed order (``AB`` for ``BA``, intrinsic for extrinsic), ``atan`` for ``atan2`` (an angle off
   by 180°), a sign error in one angle, scalar-first for scalar-last, the conjugate;
 * an exercise can add its own typical mistakes (:class:`Mistake`), each with its diagnosis.
+
+A judge is not an oracle that a search could follow: a wrong answer that matches no mistake gets
+the exercise's ``hint`` (where to look), never a side ("too large") or a distance; an answer
+within a coarse band of the reference (:data:`CLOSE_DEGREES`, :data:`CLOSE_RELATIVE`) is called
+*close*, the same words on every side of it. Tolerances are the library's ``ROTATION_ATOL`` for
+computed answers and :func:`rounded_to` for answers worked by hand to the digits asked. A choice
+comes with a computed part (:class:`ChoiceJudge`), so that trying the options passes nothing.
 """
 
 from __future__ import annotations
@@ -488,6 +495,22 @@ def _same_symbols(value: Any, reference: Any) -> Any:
     return value.xreplace(swaps) if swaps else value
 
 
+def _as_shape_of(value: Any, reference: Any) -> Any:
+    """A row or column vector ``value`` in the shape of the vector ``reference`` (a vector
+    written as a row is the same vector as a column); anything else as it is."""
+    import sympy as sp
+
+    if (
+        isinstance(value, sp.MatrixBase)
+        and isinstance(reference, sp.MatrixBase)
+        and 1 in reference.shape
+        and 1 in value.shape
+        and len(value) == len(reference)
+    ):
+        return value.reshape(*reference.shape)
+    return value
+
+
 @dataclass(frozen=True)
 class ExpressionJudge(Judge):
     """A SymPy expression or matrix, judged by its value, so that any equivalent form passes.
@@ -509,6 +532,7 @@ class ExpressionJudge(Judge):
         ref = sp.sympify(self.reference)
         value = _same_symbols(read_expression(answer, self.what), ref)
         is_matrix = isinstance(ref, sp.MatrixBase)
+        value = _as_shape_of(value, ref)
         if is_matrix != isinstance(value, sp.MatrixBase) or (
             is_matrix and value.shape != ref.shape
         ):
@@ -519,12 +543,15 @@ class ExpressionJudge(Judge):
         if self.up_to_sign and _vanishes(value + ref):
             return correct(f"{self.what} is right (with the other sign, which is as good here)")
         for mistake in self.mistakes:
-            if _vanishes(value - sp.sympify(mistake.value)):
+            wrong = _as_shape_of(sp.sympify(mistake.value), ref)
+            if getattr(wrong, "shape", None) == getattr(ref, "shape", None) and _vanishes(
+                value - wrong
+            ):
                 return off(mistake.message)
         if _vanishes(value + ref):
             return off(f"{self.what} differs from the answer by its sign")
         if is_matrix:
-            if _vanishes(value.T - ref):
+            if ref.shape[0] == ref.shape[1] and _vanishes(value.T - ref):
                 return off(
                     f"{self.what} is the transpose of the answer: check the order of the "
                     "product, or active versus passive"

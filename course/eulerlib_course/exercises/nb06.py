@@ -6,8 +6,9 @@ from collections.abc import Callable
 from typing import Any
 
 import numpy as np
+from numpy.typing import NDArray
 
-from eulerlib import euler_to_matrix
+from eulerlib import euler_to_matrix, matrix_to_euler
 
 from .judges import AnglesJudge, ArrayJudge, Constraint, ExpressionJudge, Mistake
 from .key import Example, Exercise
@@ -45,41 +46,63 @@ _DIFFERENCE = (
 )
 
 
+def _some_locked_matrix(rng: np.random.Generator) -> NDArray[np.float64]:
+    """A student's matrix at pitch +90°: yaw and roll whole degrees, roll − yaw away from 0°,
+    ±90° and 180° (where the typical mistakes would coincide with the answer) and other than in
+    the teacher's edition (whose stored outputs show its answer)."""
+    while True:
+        yaw, roll = (float(a) for a in rng.integers(-80, 81, 2))
+        difference = abs(roll - yaw) % 90.0
+        if 10.0 <= difference <= 80.0 and roll - yaw != _ROLL_MINUS_YAW:
+            return euler_to_matrix([yaw, 90.0, roll], "rose", degrees=True)
+
+
+def _judge_locked_matrix(R: NDArray[np.float64]) -> AnglesJudge:
+    """The judge of 06.1 for a matrix at pitch +90°: roll − yaw from the library."""
+    yaw, _, roll = matrix_to_euler(R, "rose", degrees=True, warn=False)
+    return _judge_locked(float(roll - yaw))
+
+
+def _judge_locked(roll_minus_yaw: float) -> AnglesJudge:
+    return AnglesJudge(
+        [0.0, 90.0, roll_minus_yaw],
+        "rose",
+        degrees=True,
+        what="your yaw, pitch, roll",
+        constraints=(
+            Constraint(
+                lambda a: abs(_wrapped(float(a[0]))) < 1e-9,
+                "the question asks for Rose's choice, yaw = 0",
+            ),
+        ),
+        mistakes=(
+            Mistake(
+                [0.0, 90.0, roll_minus_yaw + 180.0],
+                "that roll comes from eq 4a, atan2(−r12, −r13), which belongs to pitch −90° "
+                "(r31 = +1); here r31 = −1: use the formula of the other pole",
+            ),
+            Mistake(
+                [0.0, 90.0, -roll_minus_yaw],
+                "these angles give roll − yaw with the wrong sign: write out which entries of "
+                "the matrix at pitch +90° hold the sine and the cosine of the combination, "
+                "with their signs",
+            ),
+            Mistake(
+                [0.0, 90.0, 90.0 - roll_minus_yaw],
+                "the arguments of atan2 are swapped: atan2(y, x) takes the sine entry first, "
+                "and r12 = sin(roll − yaw)",
+            ),
+        ),
+    )
+
+
 EXERCISES = [
     Exercise(
         id="06.1",
         level="apply",
-        judge=AnglesJudge(
-            [0.0, 90.0, _ROLL_MINUS_YAW],
-            "rose",
-            degrees=True,
-            what="your yaw, pitch, roll",
-            constraints=(
-                Constraint(
-                    lambda a: abs(_wrapped(float(a[0]))) < 1e-9,
-                    "the question asks for Rose's choice, yaw = 0",
-                ),
-            ),
-            mistakes=(
-                Mistake(
-                    [0.0, 90.0, _ROLL_MINUS_YAW + 180.0],
-                    "that roll comes from eq 4a, atan2(−r12, −r13), which belongs to pitch −90° "
-                    "(r31 = +1); here r31 = −1, pitch +90°, and eq 4b gives roll − yaw = "
-                    "atan2(r12, r13)",
-                ),
-                Mistake(
-                    [0.0, 90.0, -_ROLL_MINUS_YAW],
-                    "these angles give roll − yaw with the wrong sign: at pitch +90° eq 4b gives "
-                    "roll − yaw = atan2(r12, r13) (r12 = sin(roll − yaw), r13 = cos(roll − yaw)); "
-                    "with Rose's choice, yaw = 0, the roll is that angle",
-                ),
-                Mistake(
-                    [0.0, 90.0, 90.0 - _ROLL_MINUS_YAW],
-                    "the arguments of atan2 are swapped: atan2(y, x) takes the sine entry first, "
-                    "and r12 = sin(roll − yaw)",
-                ),
-            ),
-        ),
+        judge=_judge_locked(_ROLL_MINUS_YAW),
+        per_student=_some_locked_matrix,
+        judged=_judge_locked_matrix,
         given=lambda: euler_to_matrix(_LOCKED_YPR, "rose", degrees=True),
         examples=(
             Example(

@@ -7,7 +7,7 @@ import math
 import numpy as np
 from numpy.typing import NDArray
 
-from eulerlib import rot_x, rot_y, rot_z
+from eulerlib import matrix_to_euler, rot_x, rot_y, rot_z
 
 from .judges import AnglesJudge, ChoiceJudge, Constraint, Mistake, NumberJudge
 from .key import Example, Exercise
@@ -64,23 +64,40 @@ _NOISE = (
     "0°, and the heading then carries the whole sum: heading = atan2(m02, m22)"
 )
 
+
+def _some_close_to_lock(rng: np.random.Generator) -> NDArray[np.float64]:
+    """A student's matrix like 09.1's: pitch π/2 − d with d from 2e-9 to 9e-9, other yaw, roll."""
+    d = float(rng.integers(2, 10)) * 1e-9
+    s, c = math.sin(d), math.cos(d)
+    pitch = np.array([[s, 0.0, c], [0.0, 1.0, 0.0], [-c, 0.0, s]])
+    yaw, roll = rng.uniform(-3.0, 3.0, 2)
+    matrix: NDArray[np.float64] = rot_z(float(yaw)) @ pitch @ rot_x(float(roll))
+    return matrix
+
+
+def _judge_pitch(pitch: float) -> NumberJudge:
+    return NumberJudge(
+        pitch,
+        what="your pitch",
+        tol=1e-15,
+        unit="rad",
+        mistakes=(
+            Mistake(math.pi / 2, _FLAT_SINE),
+            Mistake(
+                math.pi / 2 - pitch,
+                "that is the distance from 90°; the question asks for the pitch itself",
+            ),
+        ),
+    )
+
+
 EXERCISES = [
     Exercise(
         id="09.1",
         level="apply",
-        judge=NumberJudge(
-            math.pi / 2 - _DISTANCE,
-            what="your pitch",
-            tol=1e-15,
-            unit="rad",
-            mistakes=(
-                Mistake(math.pi / 2, _FLAT_SINE),
-                Mistake(
-                    _DISTANCE,
-                    "that is the distance from 90°; the question asks for the pitch itself",
-                ),
-            ),
-        ),
+        judge=_judge_pitch(math.pi / 2 - _DISTANCE),
+        per_student=_some_close_to_lock,
+        judged=lambda R: _judge_pitch(float(matrix_to_euler(R, "ZYX")[1])),
         given=_close_to_lock,
         examples=(
             Example(

@@ -13,9 +13,12 @@ Who the student is, in this order:
    ``autograde`` executes each notebook in its autograded copy of the submission folder);
 2. the name given to :func:`student_name` in the notebook (a student copy made with
    ``--student NAME`` has that cell; a student may type their name in it);
-3. the environment variable ``EULERLIB_STUDENT``, then JupyterHub's ``JUPYTERHUB_USER`` (the
-   login, which is nbgrader's student id on a JupyterHub);
+3. the environment variable ``EULERLIB_STUDENT``;
 4. nobody: the teacher's edition, with the data its worked solutions and stored outputs use.
+
+A login name (JupyterHub's ``JUPYTERHUB_USER``) is not used: a teacher who refreshes the
+teacher's edition on a hub must get the teacher's data. Under nbgrader a student types their
+student id in the name cell, and graded mode's form check reminds them while none is given.
 """
 
 from __future__ import annotations
@@ -33,8 +36,6 @@ __all__ = ["as_student", "current_student", "rng_for", "student_name"]
 
 #: The environment variable that names the student when no notebook cell does.
 ENVIRONMENT = "EULERLIB_STUDENT"
-#: JupyterHub's name of the logged-in user, who is the student on a hub.
-HUB_USER = "JUPYTERHUB_USER"
 _GRADED_FOLDER = re.compile(r"(?:autograded|submitted)$")
 
 _named: str | None = None
@@ -88,7 +89,7 @@ def current_student() -> str | None:
         return graded
     if _named is not None:
         return _named
-    return _check_name(os.environ.get(ENVIRONMENT)) or _check_name(os.environ.get(HUB_USER))
+    return _check_name(os.environ.get(ENVIRONMENT))
 
 
 def rng_for(exercise: str, name: str) -> np.random.Generator:
@@ -107,13 +108,11 @@ def rng_for(exercise: str, name: str) -> np.random.Generator:
 def as_student(name: str | None) -> Iterator[None]:
     """Within the block, the exercises give ``name``'s data (None: the teacher's); for tests."""
     global _named
-    saved = _named
-    saved_env = {key: os.environ.pop(key, None) for key in (ENVIRONMENT, HUB_USER)}
+    saved, saved_env = _named, os.environ.pop(ENVIRONMENT, None)
     _named = _check_name(name)
     try:
         yield
     finally:
         _named = saved
-        for key, value in saved_env.items():
-            if value is not None:
-                os.environ[key] = value
+        if saved_env is not None:
+            os.environ[ENVIRONMENT] = saved_env
