@@ -512,21 +512,33 @@ def open_page(context: Any, site: Site, name: str, width: int, visit: Visit) -> 
 
 
 @pytest.fixture(scope="module")
-def browser(site: Site) -> Iterator[Any]:
-    """A headless Chromium with a fresh profile (the system's, driven by Playwright)."""
+def driver(site: Site) -> Iterator[Any]:
+    """Playwright, started once for the module: its synchronous API runs one driver at a time."""
     from playwright.sync_api import sync_playwright
 
+    with sync_playwright() as playwright:
+        yield playwright
+
+
+def launch(driver: Any, profile: str, **options: Any) -> Any:
+    """A headless Chromium (the system's) with the fresh profile folder ``profile``."""
     arguments = [*CHROMIUM_ARGS]
     if hasattr(os, "geteuid") and os.geteuid() == 0:
         arguments.append("--no-sandbox")  # Chromium refuses to run as root otherwise
-    with tempfile.TemporaryDirectory() as profile, sync_playwright() as playwright:
-        context = playwright.chromium.launch_persistent_context(
-            profile,  # a fresh --user-data-dir
-            executable_path=chromium_executable(),
-            headless=True,
-            args=arguments,
-            viewport={"width": DESKTOP, "height": 900},
-        )
+    return driver.chromium.launch_persistent_context(
+        profile,  # a fresh --user-data-dir
+        executable_path=chromium_executable(),
+        headless=True,
+        args=arguments,
+        **options,
+    )
+
+
+@pytest.fixture(scope="module")
+def browser(driver: Any) -> Iterator[Any]:
+    """A headless Chromium with a fresh profile, at a desktop's width."""
+    with tempfile.TemporaryDirectory() as profile:
+        context = launch(driver, profile, viewport={"width": DESKTOP, "height": 900})
         yield context
         context.close()
 
@@ -898,21 +910,14 @@ def test_five_notebooks_show_explorables() -> None:
 
 
 @pytest.mark.parametrize("width", [1280, 390], ids=["desktop", "phone"])
-def test_explorables_are_live_on_the_site(site: Site, width: int) -> None:
+def test_explorables_are_live_on_the_site(site: Site, driver: Any, width: int) -> None:
     """Drag the view and operate a control: the picture and the numbers change, computed in the
     page; nothing is asked of another host; the page fits a phone's width (where the browser
     asks for reduced motion, and nothing offers to play)."""
-    from playwright.sync_api import sync_playwright
-
-    arguments = [*CHROMIUM_ARGS]
-    if hasattr(os, "geteuid") and os.geteuid() == 0:
-        arguments.append("--no-sandbox")
-    with tempfile.TemporaryDirectory() as profile, sync_playwright() as playwright:
-        context = playwright.chromium.launch_persistent_context(
+    with tempfile.TemporaryDirectory() as profile:
+        context = launch(
+            driver,
             profile,
-            executable_path=chromium_executable(),
-            headless=True,
-            args=arguments,
             viewport={"width": width, "height": 900},
             reduced_motion="reduce" if width < 500 else "no-preference",
         )
@@ -967,18 +972,11 @@ def test_explorables_are_live_on_the_site(site: Site, width: int) -> None:
         context.close()
 
 
-def test_the_gimbal_locks_on_the_page_of_notebook_07(site: Site) -> None:
+def test_the_gimbal_locks_on_the_page_of_notebook_07(site: Site, driver: Any) -> None:
     """Raise the pitch of notebook 07's explorable from 85° to 90°: the page says LOCKED and
     reads back yaw 0, as eulerlib does."""
-    from playwright.sync_api import sync_playwright
-
-    arguments = [*CHROMIUM_ARGS]
-    if hasattr(os, "geteuid") and os.geteuid() == 0:
-        arguments.append("--no-sandbox")
-    with tempfile.TemporaryDirectory() as profile, sync_playwright() as playwright:
-        context = playwright.chromium.launch_persistent_context(
-            profile, executable_path=chromium_executable(), headless=True, args=arguments
-        )
+    with tempfile.TemporaryDirectory() as profile:
+        context = launch(driver, profile)
         page = context.new_page()
         page.goto(site.url + explorable_notebooks()[0], wait_until="load")
         live = page.locator(".eulerlib-explorable-live").first
