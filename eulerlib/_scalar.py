@@ -24,7 +24,7 @@ arrays: the two paths cannot drift apart in what they say, only in how fast they
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 from numpy.typing import NDArray
@@ -140,6 +140,18 @@ def rotation(value: Any, check: RotationCheck) -> Nine | None:
     if entries is None or (check.validate and not is_rotation(entries, check.atol)):
         return None
     return entries
+
+
+def rotations(value: Any, check: RotationCheck) -> list[Nine] | None:
+    """A few rotation matrices (a float64 array of 2 to :data:`SMALL_BATCH`) that all pass
+    ``check`` (without repair), each as nine floats; None for anything else, which then takes
+    the array path and its wording of any refusal."""
+    if check.repair:
+        return None
+    rows = cast("list[Nine] | None", small_batch(value, (3, 3)))
+    if rows is None or (check.validate and not all(is_rotation(e, check.atol) for e in rows)):
+        return None
+    return rows
 
 
 def as_array(numbers: tuple[float, ...], shape: tuple[int, ...]) -> NDArray[np.float64]:

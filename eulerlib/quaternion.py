@@ -284,12 +284,10 @@ def matrix_to_quaternion(
     single = _scalar.rotation(R, check)
     if single is not None:
         return _one_stored(normalized(entries_to_quaternion(single)), first)
-    few = _scalar.small_batch(R, (3, 3)) if not check.repair else None
-    if few is not None and (
-        not check.validate or all(_scalar.is_rotation(row, check.atol) for row in few)  # type: ignore[arg-type]
-    ):  # a few matrices, one after another in Python floats
+    few = _scalar.rotations(R, check)
+    if few is not None:  # a few matrices, one after another in Python floats
         stored = _STORED[first]
-        quaternions = [normalized(entries_to_quaternion(row)) for row in few]  # type: ignore[arg-type]
+        quaternions = [normalized(entries_to_quaternion(row)) for row in few]
         return np.array([[q[i] for i in stored] for q in quaternions])
     matrices = as_matrix_stack(R, "R")
     lead = matrices.shape[:-2]

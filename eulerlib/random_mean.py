@@ -44,6 +44,7 @@ from __future__ import annotations
 
 import math
 import operator
+from typing import cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -52,6 +53,7 @@ from eulerlib._algebra_kernels import matrix_one
 from eulerlib._blocks import block_slices
 from eulerlib._procrustes_kernels import procrustes_one, special_procrustes
 from eulerlib._quaternion_kernels import quaternions_to_entries
+from eulerlib._scalar import rotations
 from eulerlib._validation import (
     ROTATION_ATOL,
     _index_text,
@@ -226,7 +228,13 @@ def mean_rotation(
     np.float64(25.0)
     """
     check = rotation_check(validate, repair, atol)
-    matrices = as_rotations(R, "R", check)
+    # A few matrices are checked one by one in Python floats, the same test in the same
+    # arithmetic (eulerlib._scalar); anything else, or a matrix that fails, takes the array path,
+    # which words the refusal.
+    if rotations(R, check) is not None:
+        matrices = cast(NDArray[np.float64], R)
+    else:
+        matrices = as_rotations(R, "R", check)
     if matrices.ndim < 3:
         raise ValueError(f"R must have shape (..., N, 3, 3), got shape {matrices.shape}")
     count = matrices.shape[-3]

@@ -256,3 +256,20 @@ def test_one_rotation_is_the_first_of_many() -> None:
         assert_array_equal(
             random_rotations((1, 1), rng=seed)[0, 0], random_rotations(1, rng=seed)[0]
         )
+
+
+@pytest.mark.parametrize("count", [2, 5, 16, 17])
+def test_a_few_matrices_are_checked_as_many_are(count: int) -> None:
+    """Up to 16 matrices are checked one by one in Python floats, more as an array: the same
+    means, the same refusals, worded alike."""
+    R = Rotation.random(count, rng=count).as_matrix()
+    assert np.allclose(mean_rotation(R), Rotation.from_matrix(R).mean().as_matrix(), atol=1e-14)
+    bad = R.copy()
+    bad[count // 2] = bad[count // 2] @ np.diag([1.0, 1.0, -1.0])  # a reflection among them
+    with pytest.raises(ValueError, match=rf"^R at index \({count // 2},\) has determinant"):
+        mean_rotation(bad)
+    noisy = R.copy()
+    noisy[-1] = noisy[-1] + 1e-3  # not orthogonal within the default tolerance
+    with pytest.raises(ValueError, match=rf"^R at index \({count - 1},\) is not a rotation"):
+        mean_rotation(noisy)
+    assert np.allclose(mean_rotation(noisy, atol=1e-2), mean_rotation(noisy, validate=False))
