@@ -32,7 +32,9 @@ def _field(heading: float, dip: float) -> NDArray[np.float64]:
     return np.array([math.cos(d) * math.cos(h), math.cos(d) * math.sin(h), -math.sin(d)])
 
 
-def _attitude(observed: NDArray[np.float64], weights: list[float], ref: NDArray[np.float64]) -> NDArray[np.float64]:
+def _attitude(
+    observed: NDArray[np.float64], weights: list[float], ref: NDArray[np.float64]
+) -> NDArray[np.float64]:
     return np.asarray(align_vectors(observed, ref, weights=weights).matrix.T, dtype=np.float64)
 
 
@@ -54,9 +56,7 @@ def _data_1(
     return accel, field, field_ref.copy()
 
 
-_GIVEN_1 = _data_1(
-    _TRUE_1, _FIELD_1, np.array([0.06, -0.09, 0.03]), np.array([0.02, 0.01, -0.025])
-)
+_GIVEN_1 = _data_1(_TRUE_1, _FIELD_1, np.array([0.06, -0.09, 0.03]), np.array([0.02, 0.01, -0.025]))
 
 
 def _some_data_1(
@@ -252,9 +252,7 @@ EXERCISES = [
                 "off",
                 "TRIAD",
             ),
-            Example(
-                "align_vectors(seen_ex, ref_ex, weights=1 / w_ex).matrix.T", "off", "inverse"
-            ),
+            Example("align_vectors(seen_ex, ref_ex, weights=1 / w_ex).matrix.T", "off", "inverse"),
         ),
         forbidden=tuple(f"{value:.4f}" for value in _ANSWER_3.ravel()),
     ),

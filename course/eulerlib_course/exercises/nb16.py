@@ -85,17 +85,19 @@ EXERCISES = [
         ),
         given=lambda: (_ESTIMATE_1.copy(), _READING_1.copy(), _GAIN_1),
         examples=(
+            Example("k_ex * np.cross(a_ex / np.linalg.norm(a_ex), M_ex.T @ [0, 0, 1])", "correct"),
+            Example("-k_ex * np.cross(M_ex[2], a_ex) / np.linalg.norm(a_ex)", "correct"),
             Example(
-                "k_ex * np.cross(a_ex / np.linalg.norm(a_ex), M_ex.T @ [0, 0, 1])", "correct"
+                "k_ex * np.cross(M_ex.T @ [0, 0, 1], a_ex / np.linalg.norm(a_ex))",
+                "off",
+                "opposite way",
             ),
-            Example(
-                "-k_ex * np.cross(M_ex[2], a_ex) / np.linalg.norm(a_ex)", "correct"
-            ),
-            Example("k_ex * np.cross(M_ex.T @ [0, 0, 1], a_ex / np.linalg.norm(a_ex))", "off", "opposite way"),
             Example("k_ex * np.cross(a_ex, M_ex.T @ [0, 0, 1])", "off", "not of length 1"),
             Example("k_ex * np.cross(a_ex / np.linalg.norm(a_ex), [0, 0, 1])", "off", "earth axes"),
             Example(
-                "k_ex * np.cross(a_ex / np.linalg.norm(a_ex), M_ex @ [0, 0, 1])", "off", "wrong way round"
+                "k_ex * np.cross(a_ex / np.linalg.norm(a_ex), M_ex @ [0, 0, 1])",
+                "off",
+                "wrong way round",
             ),
             Example("np.cross(a_ex / np.linalg.norm(a_ex), M_ex.T @ [0, 0, 1])", "off", "the gain"),
         ),
@@ -106,7 +108,8 @@ EXERCISES = [
         level="predict",
         judge=ChoiceJudge(
             options={
-                "a": "it shrinks by the same factor in every equal stretch of time, once it is small",
+                "a": "it shrinks by the same factor in every equal stretch of time, once it is "
+                "small",
                 "b": "it shrinks at a steady rate and reaches zero in a finite time",
                 "c": "it stays: the gyroscope reads zero and holds the attitude",
                 "d": "it swings past zero and back, as a spring would",

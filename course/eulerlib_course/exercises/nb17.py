@@ -81,23 +81,27 @@ EXERCISES = [
         given=lambda: _U_1.copy(),
         examples=(
             Example(
-                "[360 * u_ex[0] - 180, np.degrees(np.arcsin(2 * u_ex[1] - 1)), 360 * u_ex[2] - 180]",
+                "[360 * u_ex[0] - 180, "
+                "np.degrees(np.arcsin(2 * u_ex[1] - 1)), 360 * u_ex[2] - 180]",
                 "correct",
             ),
             Example(
-                "[360 * u_ex[0] + 180, -np.degrees(np.arcsin(1 - 2 * u_ex[1])), 360 * u_ex[2] - 540]",
+                "[360 * u_ex[0] + 180, "
+                "-np.degrees(np.arcsin(1 - 2 * u_ex[1])), 360 * u_ex[2] - 540]",
                 "correct",
             ),
             Example(
                 "[360 * u_ex[0] - 180, 180 * u_ex[1] - 90, 360 * u_ex[2] - 180]", "off", "poles"
             ),
             Example(
-                "[360 * u_ex[0] - 180, np.degrees(np.arccos(2 * u_ex[1] - 1)), 360 * u_ex[2] - 180]",
+                "[360 * u_ex[0] - 180, "
+                "np.degrees(np.arccos(2 * u_ex[1] - 1)), 360 * u_ex[2] - 180]",
                 "off",
                 "from the pole",
             ),
             Example(
-                "[2 * np.pi * u_ex[0] - np.pi, np.arcsin(2 * u_ex[1] - 1), 2 * np.pi * u_ex[2] - np.pi]",
+                "[2 * np.pi * u_ex[0] - np.pi, "
+                "np.arcsin(2 * u_ex[1] - 1), 2 * np.pi * u_ex[2] - np.pi]",
                 "off",
                 "radians",
             ),
@@ -123,8 +127,8 @@ EXERCISES = [
                 mistakes=(
                     Mistake(
                         _AREA_SHARE_2,
-                        "this is the cap's share of the sphere's area, what uniform rotations give; "
-                        "the question draws the pitch evenly instead",
+                        "this is the cap's share of the sphere's area, what uniform rotations "
+                        "give; the question draws the pitch evenly instead",
                     ),
                     Mistake(
                         2 * _EULER_SHARE_2,
@@ -178,17 +182,13 @@ EXERCISES = [
                 "matrix_to_euler(mean_rotation(R_ex[::-1]), 'ZYX', degrees=True) + [360, 0, 0]",
                 "correct",
             ),
-            Example(
-                "matrix_to_euler(R_ex, 'rose', degrees=True).mean(axis=0)", "off", "seam"
-            ),
+            Example("matrix_to_euler(R_ex, 'rose', degrees=True).mean(axis=0)", "off", "seam"),
             Example(
                 "matrix_to_euler(mean_rotation(R_ex), 'rose', degrees=True)[::-1]",
                 "off",
                 "reverse order",
             ),
-            Example(
-                "matrix_to_euler(mean_rotation(R_ex), 'rose')", "off", "radians"
-            ),
+            Example("matrix_to_euler(mean_rotation(R_ex), 'rose')", "off", "radians"),
         ),
         forbidden=tuple(f"{value:.2f}" for value in _MEAN_3),
     ),
