@@ -83,7 +83,7 @@ EXERCISES = [
                 ),
             ),
         ),
-        given=lambda: (_ESTIMATE_1.copy(), _READING_1.copy(), _GAIN_1),
+        given=lambda: (_ESTIMATE_1.copy(), _READING_1.copy(), np.array(_GAIN_1)),
         examples=(
             Example("k_ex * np.cross(a_ex / np.linalg.norm(a_ex), M_ex.T @ [0, 0, 1])", "correct"),
             Example("-k_ex * np.cross(M_ex[2], a_ex) / np.linalg.norm(a_ex)", "correct"),
@@ -147,7 +147,7 @@ EXERCISES = [
                 "the tilt has nothing that carries it past zero",
             },
         ),
-        given=lambda: (_GAIN_2, _FROM_2, _TO_2),
+        given=lambda: (np.array(_GAIN_2), np.array(_FROM_2), np.array(_TO_2)),
         examples=(
             Example("('a', 1.60)", "correct"),
             Example(
@@ -190,7 +190,7 @@ EXERCISES = [
                 ),
             ),
         ),
-        given=lambda: (_BIAS_3, _GAIN_3),
+        given=lambda: (np.array(_BIAS_3), np.array(_GAIN_3)),
         examples=(
             Example("np.degrees(np.arcsin(np.radians(bias_ex) / k_ex))", "correct"),
             Example("bias_ex / k_ex", "correct"),
