@@ -398,8 +398,7 @@ def _a_real_imu_recording() -> Figure:
 def _plotted(values: Any, decimals: int = 6) -> NDArray[np.float64]:
     """Values rounded before they are drawn, so that the last bits of a sine or an SVD, which
     differ between processors and numpy's SIMD paths, cannot move a pixel."""
-    rounded: NDArray[np.float64] = np.round(np.asarray(values, dtype=np.float64), decimals) + 0.0
-    return rounded
+    return np.asarray(np.round(np.asarray(values, dtype=np.float64), decimals) + 0.0, np.float64)
 
 
 def _attitude_from_two_directions() -> Figure:
