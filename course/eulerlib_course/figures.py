@@ -43,6 +43,7 @@ from eulerlib.elementary import elementary_rotation, rot_x, rot_z
 from eulerlib.euler import euler_to_matrix, matrix_to_euler
 from eulerlib.integration import integrate_angular_velocity
 from eulerlib.interpolation import slerp
+from eulerlib.observations import align_vectors
 from eulerlib.plotting import (
     aircraft_segments,
     animate_gimbal_lock,
@@ -394,6 +395,102 @@ def _a_real_imu_recording() -> Figure:
     return fig
 
 
+def _plotted(values: Any, decimals: int = 6) -> NDArray[np.float64]:
+    """Values rounded before they are drawn, so that the last bits of a sine or an SVD, which
+    differ between processors and numpy's SIMD paths, cannot move a pixel."""
+    return np.asarray(np.round(np.asarray(values, dtype=np.float64), decimals) + 0.0, np.float64)
+
+
+def _attitude_from_two_directions() -> Figure:
+    """A level body pushed forward: TRIAD with gravity exact tilts, with the field exact not."""
+    import matplotlib.pyplot as plt
+
+    push = np.linspace(0.0, 1.0, 41)  # g, along the body's x axis
+    dip = np.radians(35.0)
+    field = np.array([np.cos(dip), 0.0, -np.sin(dip)])  # the field, north along x
+    seen = np.zeros((len(push), 2, 3))
+    seen[:, 0] = np.column_stack([push, np.zeros_like(push), np.ones_like(push)])
+    seen[:, 1] = field  # the body is level: it sees the field as it is
+    reference = np.stack([np.array([0.0, 0.0, 1.0]), field])
+    fig, ax = plt.subplots(figsize=(6, 3.6), layout="constrained")
+    for weights, label, style in (
+        ([np.inf, 1.0], "TRIAD, gravity exact", "-"),
+        ([1.0, 1.0], "Wahba, equal weights", "--"),
+        ([1.0, np.inf], "TRIAD, field exact", ":"),
+    ):
+        C = align_vectors(seen / np.linalg.norm(seen, axis=-1, keepdims=True), reference, weights)
+        error = angle_between(C.matrix, np.eye(3), degrees=True)
+        ax.plot(push, _plotted(error, 4), style, linewidth=2.2, label=label)
+    ax.set_xlabel("the body's own acceleration, g")
+    ax.set_ylabel("attitude error, degrees")
+    ax.set_ylim(-2, 50)
+    ax.grid(alpha=0.3)
+    ax.set_title("a push read as a tilt: which direction to trust", fontsize=10)
+    ax.legend(fontsize=8, loc="upper left")
+    return fig
+
+
+def _fusing_gyroscope_gravity_and_field() -> Figure:
+    """A complementary filter on a tilt: the gyroscope drifts, the accelerometer shakes."""
+    import matplotlib.pyplot as plt
+
+    dt, steps = 0.01, 1000
+    times = dt * np.arange(steps + 1)
+    truth = 20.0 * np.sin(0.8 * times)  # degrees
+    rate = np.gradient(truth, dt)
+    # fixed "noise": a sum of a few fast sines, the same on every machine once rounded
+    shake = (
+        4.0 * np.sin(37.0 * times) + 3.0 * np.sin(53.0 * times + 1.0) + 2.0 * np.sin(91.0 * times)
+    )
+    measured = _plotted(truth + shake)
+    gyro = _plotted(rate + 1.5)  # a bias of 1.5 °/s
+    gain = 0.8  # 1/s
+    integrated, fused = [0.0], [0.0]
+    for k in range(steps):
+        integrated.append(integrated[-1] + gyro[k] * dt)
+        fused.append(fused[-1] + (gyro[k] + gain * (measured[k] - fused[-1])) * dt)
+    fig, ax = plt.subplots(figsize=(6, 3.6), layout="constrained")
+    ax.plot(times, measured, color="0.7", linewidth=0.8, label="accelerometer: noisy, no drift")
+    ax.plot(
+        times,
+        _plotted(integrated, 4),
+        color="tab:red",
+        linewidth=1.8,
+        label="gyroscope: smooth, drifts",
+    )
+    ax.plot(
+        times, _plotted(fused, 4), color="tab:blue", linewidth=2.2, label="complementary filter"
+    )
+    ax.plot(times, _plotted(truth, 4), "k:", linewidth=1.2, label="true tilt")
+    ax.set_xlabel("time, s")
+    ax.set_ylabel("tilt, degrees")
+    ax.grid(alpha=0.3)
+    ax.set_title("fusing the gyroscope with gravity", fontsize=10)
+    ax.legend(fontsize=7, loc="upper left", ncol=2)
+    ax.set_ylim(-35, 45)
+    return fig
+
+
+def _random_and_average_rotations() -> Figure:
+    """The density of the nose's height: uniform Euler angles crowd it at the poles."""
+    import matplotlib.pyplot as plt
+
+    z = np.linspace(-0.995, 0.995, 399)
+    euler = 1.0 / (np.pi * np.sqrt(1.0 - z**2))  # pitch uniform: z = −sin(pitch)
+    fig, ax = plt.subplots(figsize=(6, 3.6), layout="constrained")
+    ax.plot(z, _plotted(euler, 5), color="tab:red", linewidth=2.2, label="yaw, pitch, roll uniform")
+    ax.plot(
+        z, np.full_like(z, 0.5), color="tab:green", linewidth=2.2, label="uniform rotations (Haar)"
+    )
+    ax.set_xlabel("height of the nose (−1: straight down, 1: straight up)")
+    ax.set_ylabel("density")
+    ax.set_ylim(0, 2.0)
+    ax.grid(alpha=0.3)
+    ax.set_title("uniform angles are not uniform rotations", fontsize=10)
+    ax.legend(fontsize=8, loc="upper center")
+    return fig
+
+
 def _frame_zyx() -> Figure:
     R = euler_to_matrix(_ANGLES, "ZYX", degrees=True)
     return plot_frames(R, figsize=(4, 4), title="ZYX: yaw 30°, pitch 20°, roll 10°")
@@ -415,6 +512,9 @@ THUMBNAILS: dict[str, Callable[[], Figure]] = {
     "12_interpolating_orientations.png": _interpolating_orientations,
     "13_angular_velocity_and_euler_rates.png": _angular_velocity_and_euler_rates,
     "14_a_real_imu_recording.png": _a_real_imu_recording,
+    "15_attitude_from_two_directions.png": _attitude_from_two_directions,
+    "16_fusing_gyroscope_gravity_and_field.png": _fusing_gyroscope_gravity_and_field,
+    "17_random_and_average_rotations.png": _random_and_average_rotations,
 }
 
 #: Every file :func:`write_figures` writes, in the order it writes them.
