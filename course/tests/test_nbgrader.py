@@ -18,8 +18,9 @@ Two parts.
   (``release_assignment``, a student's ``fetch_assignment`` and ``submit``, ``collect``,
   ``autograde``, ``generate_feedback``, ``release_feedback``, ``fetch_feedback``): no command
   may print a warning but the one the README explains, the formgrader (JupyterLab started in
-  the course folder) lists each assignment's notebook alone, and the feedback page typesets its
-  mathematics in Chromium with every other host refused.
+  the course folder) lists each assignment's notebook alone, and the feedback page and the
+  formgrader's view of a submission typeset their mathematics in Chromium with every other host
+  refused.
 """
 
 from __future__ import annotations
@@ -753,6 +754,7 @@ def open_offline(
     ``headers``) in the system's Chromium (headless, a fresh profile) with every request to
     another host refused; wait until the script ``ready`` is true, if one is given: what
     :data:`MATH_FACTS` finds, the refused requests and the console's errors."""
+    from playwright.sync_api import TimeoutError as PlaywrightTimeoutError
     from playwright.sync_api import sync_playwright
 
     refused: list[str] = []
@@ -785,7 +787,10 @@ def open_offline(
             page.on("pageerror", lambda error: errors.append(str(error)))
             page.goto(url, wait_until="load")
             if ready is not None:
-                page.wait_for_function(ready, timeout=60_000)
+                try:
+                    page.wait_for_function(ready, timeout=30_000)
+                except PlaywrightTimeoutError:
+                    errors.append(f"still not true after 30 s: {ready}")
             facts = page.evaluate(MATH_FACTS)
         finally:
             context.close()
@@ -892,7 +897,7 @@ def test_the_readme_cycle_release_collect_autograde_feedback(
     autogrades, writes and releases the feedback, the student fetches it. The feedback page
     shows the right answer as correct, the blank ones as not handed in, and typesets its math in
     Chromium with the network refused. The formgrader lists the notebook alone, not the
-    glossary."""
+    glossary, and its view of the submission typesets its math with the network refused too."""
     course, exchange, student = tmp_path / "grading", tmp_path / "exchange", tmp_path / "alice"
     status, _, err = run_cli(
         capsys, "notebooks", "nbgrader", "--src", str(small_course), "--out", str(course)
