@@ -383,7 +383,8 @@ def nbgrader_config() -> str:
     when it creates the gradebook, and a teacher who runs ``../.venv/bin/nbgrader`` without
     activating the environment would otherwise meet ``FileNotFoundError: 'alembic'``.
     Then come the settings of :func:`_grading_settings`: autograde without the false "checksum
-    has changed" of hidden tests, feedback pages with MathJax in them, no SQLAlchemy session
+    has changed" of hidden tests, feedback pages and formgrader views with MathJax in them, no
+    SQLAlchemy session
     warnings from nbgrader, and the course's name in the exchange (:data:`COURSE_ID`).
     """
     return (
@@ -419,7 +420,8 @@ def _grading_settings() -> str:
         "\n"
         "# autograde: a test cell handed back as it was released is not reported as changed\n"
         "# (nbgrader stores its checksum with the hidden tests, which the release never had).\n"
-        "# The feedback pages: MathJax written into each page, so that it typesets offline.\n"
+        "# The feedback pages and the formgrader's view of a submission: MathJax written into\n"
+        "# each page, so that it typesets offline.\n"
         "import warnings\n"
         "\n"
         "from eulerlib_course import nbgrader_hooks\n"

@@ -15,7 +15,10 @@ Two things, each fixing something a teacher would otherwise meet on every run:
   writes MathJax 3 into the page itself (:func:`mathjax_script`, from the
   ``sphinx-mathjax-offline`` package, which the ``teach`` extra installs): a feedback page
   typesets its mathematics wherever it is opened, with no network, after ``release_feedback``
-  too.
+  too. The formgrader's view of a submission is the same kind of page (nbgrader's ``formgrade``
+  template, rendered by the formgrader with the ``HTMLExporter`` settings of the course folder's
+  ``nbgrader_config.py``, which it reads after its own), so ``formgrade/mathjax.html.j2`` does
+  the same there and also answers the one MathJax 2 call of the formgrader's script.
 
 This module needs nbgrader (the ``teach`` extra).
 """
@@ -39,7 +42,7 @@ __all__ = [
     "sanitize_preprocessors",
 ]
 
-#: nbconvert template folders of the edition (``feedback/mathjax.html.j2``).
+#: nbconvert template folders of the edition (``feedback/`` and ``formgrade/mathjax.html.j2``).
 TEMPLATES = Path(__file__).resolve().parent / "nbgrader_templates"
 
 _MATHJAX_PACKAGE = "sphinx-mathjax-offline"
@@ -105,8 +108,9 @@ def sanitize_preprocessors() -> list[Any]:
 
 
 def feedback_template_dirs() -> list[str]:
-    """nbconvert's ``extra_template_basedirs`` for the feedback pages: :data:`TEMPLATES` first,
-    then nbgrader's own templates (which nbgrader adds itself only when none are configured)."""
+    """nbconvert's ``extra_template_basedirs`` for the feedback pages and the formgrader's view of
+    a submission: :data:`TEMPLATES` first, then nbgrader's own templates (which nbgrader adds
+    itself only when none are configured)."""
     import nbgrader
 
     nbgrader_templates = (

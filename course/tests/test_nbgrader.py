@@ -18,8 +18,9 @@ Two parts.
   (``release_assignment``, a student's ``fetch_assignment`` and ``submit``, ``collect``,
   ``autograde``, ``generate_feedback``, ``release_feedback``, ``fetch_feedback``): no command
   may print a warning but the one the README explains, the formgrader (JupyterLab started in
-  the course folder) lists each assignment's notebook alone, and the feedback page typesets its
-  mathematics in Chromium with every other host refused.
+  the course folder) lists each assignment's notebook alone, and the feedback page and the
+  formgrader's view of a submission typeset their mathematics in Chromium with every other host
+  refused.
 """
 
 from __future__ import annotations
@@ -746,10 +747,14 @@ MATH_FACTS = """async () => {
 }"""
 
 
-def open_offline(page_path: Path) -> tuple[dict[str, Any], list[str], list[str]]:
-    """Open a local page in the system's Chromium (headless, a fresh profile) with every request
-    to another host refused: what :data:`MATH_FACTS` finds, the refused requests and the
-    console's errors."""
+def open_offline(
+    address: Path | str, headers: dict[str, str] | None = None, ready: str | None = None
+) -> tuple[dict[str, Any], list[str], list[str]]:
+    """Open a local page (a file, or an address on the loopback interface, sent with
+    ``headers``) in the system's Chromium (headless, a fresh profile) with every request to
+    another host refused; wait until the script ``ready`` is true, if one is given: what
+    :data:`MATH_FACTS` finds, the refused requests and the console's errors."""
+    from playwright.sync_api import TimeoutError as PlaywrightTimeoutError
     from playwright.sync_api import sync_playwright
 
     refused: list[str] = []
@@ -766,16 +771,26 @@ def open_offline(page_path: Path) -> tuple[dict[str, Any], list[str], list[str]]
     arguments = ["--disable-background-networking", "--disable-component-update", "--no-first-run"]
     if hasattr(os, "geteuid") and os.geteuid() == 0:
         arguments.append("--no-sandbox")  # Chromium refuses to run as root otherwise
+    url = address.as_uri() if isinstance(address, Path) else address
     with tempfile.TemporaryDirectory() as profile, sync_playwright() as playwright:
         context = playwright.chromium.launch_persistent_context(
-            profile, executable_path=chromium_executable(), headless=True, args=arguments
+            profile,
+            executable_path=chromium_executable(),
+            headless=True,
+            args=arguments,
+            extra_http_headers=headers or {},
         )
         try:
             page = context.new_page()
             page.route("**/*", route)
             page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
             page.on("pageerror", lambda error: errors.append(str(error)))
-            page.goto(page_path.as_uri(), wait_until="load")
+            page.goto(url, wait_until="load")
+            if ready is not None:
+                try:
+                    page.wait_for_function(ready, timeout=30_000)
+                except PlaywrightTimeoutError:
+                    errors.append(f"still not true after 30 s: {ready}")
             facts = page.evaluate(MATH_FACTS)
         finally:
             context.close()
@@ -791,11 +806,21 @@ def browser_missing() -> str | None:
     return None
 
 
-def formgrader_lists(course: Path, tmp_path: Path, assignment: str) -> tuple[list[str], list[str]]:
+#: True in the formgrader's view of a submission once its script has heard that MathJax is done
+#: (formgrade.js sets ``MathJax.loaded`` when MathJax 2's startup signals "End").
+FORMGRADER_READY = "() => window.MathJax !== undefined && window.MathJax.loaded === true"
+
+
+def visit_formgrader(
+    course: Path, tmp_path: Path, assignment: str, *, in_browser: bool
+) -> tuple[list[str], list[str], tuple[dict[str, Any], list[str], list[str]] | None]:
     """Start JupyterLab in the course folder as the README says (the environment's ``jupyter``,
     here headless on the loopback interface with a token and its own runtime and configuration
     folders) and ask nbgrader's formgrader for the assignments and the notebooks of
-    ``assignment``, by name."""
+    ``assignment``, by name; if ``in_browser``, also open the formgrader's view of the first
+    submission of ``assignment``'s first notebook as a teacher does, in Chromium with every
+    request to another host refused (:func:`open_offline`, once the formgrader's script has
+    heard from MathJax)."""
     with socket.socket() as probe:
         probe.bind(("127.0.0.1", 0))
         port = int(probe.getsockname()[1])
@@ -845,13 +870,22 @@ def formgrader_lists(course: Path, tmp_path: Path, assignment: str) -> tuple[lis
                         pytest.fail("JupyterLab did not start:\n" + log_path.read_text())
                     time.sleep(0.5)
             notebooks = ask(f"notebooks/{assignment}")
+            view = None
+            if in_browser:
+                notebook = notebooks[0]["name"]
+                (submitted, *_) = ask(f"submitted_notebooks/{assignment}/{notebook}")
+                view = open_offline(
+                    f"http://127.0.0.1:{port}/formgrader/submissions/{submitted['id']}/",
+                    headers={"Authorization": f"token {token}"},
+                    ready=FORMGRADER_READY,
+                )
         finally:
             server.terminate()
             try:
                 server.wait(timeout=30)
             except subprocess.TimeoutExpired:
                 server.kill()
-    return [a["name"] for a in assignments], [n["name"] for n in notebooks]
+    return [a["name"] for a in assignments], [n["name"] for n in notebooks], view
 
 
 @needs_nbgrader_run
@@ -863,7 +897,7 @@ def test_the_readme_cycle_release_collect_autograde_feedback(
     autogrades, writes and releases the feedback, the student fetches it. The feedback page
     shows the right answer as correct, the blank ones as not handed in, and typesets its math in
     Chromium with the network refused. The formgrader lists the notebook alone, not the
-    glossary."""
+    glossary, and its view of the submission typesets its math with the network refused too."""
     course, exchange, student = tmp_path / "grading", tmp_path / "exchange", tmp_path / "alice"
     status, _, err = run_cli(
         capsys, "notebooks", "nbgrader", "--src", str(small_course), "--out", str(course)
@@ -907,7 +941,13 @@ def test_the_readme_cycle_release_collect_autograde_feedback(
     with Gradebook(f"sqlite:///{course / 'gradebook.db'}") as gradebook:
         listed = [notebook.name for notebook in gradebook.find_assignment(SMALL).notebooks]
     assert listed == [SMALL]  # what the formgrader lists: no glossary
-    assert formgrader_lists(course, tmp_path, SMALL) == ([SMALL], [SMALL])
+    reason = browser_missing()
+    if reason is not None and os.environ.get("EULERLIB_SITE_TEST") == "required":
+        pytest.fail(reason)
+    assignments, notebooks, view = visit_formgrader(
+        course, tmp_path, SMALL, in_browser=reason is None
+    )
+    assert (assignments, notebooks) == ([SMALL], [SMALL])
 
     (page,) = (student / SMALL / "feedback").glob(f"*/{SMALL}.html")
     text = page.read_text(encoding="utf-8")
@@ -916,12 +956,15 @@ def test_the_readme_cycle_release_collect_autograde_feedback(
     assert "replace the ..." not in text
     assert "cdnjs" not in text and "mathjax/2.7" not in text.lower()
 
-    reason = browser_missing()
     if reason is not None:
-        if os.environ.get("EULERLIB_SITE_TEST") == "required":
-            pytest.fail(reason)
-        pytest.skip(f"the feedback page is not opened in a browser: {reason}")
+        pytest.skip(f"the feedback page and the formgrader are not opened in a browser: {reason}")
     facts, refused, errors = open_offline(page)
+    assert refused == [] and errors == []
+    assert facts["typeset"] >= 1 and facts["texErrors"] == []
+    assert "r_{31}" not in facts["text"] and "$" not in facts["text"]
+
+    assert view is not None  # the formgrader's view of the submission, offline as well
+    facts, refused, errors = view
     assert refused == [] and errors == []
     assert facts["typeset"] >= 1 and facts["texErrors"] == []
     assert "r_{31}" not in facts["text"] and "$" not in facts["text"]
