@@ -191,7 +191,14 @@ def test_the_students_side_of_a_graded_release_holds_no_reference(
     assert search(keyless, wanted) == []
 
 
+@pytest.mark.skipif(
+    os.environ.get("EULERLIB_NBGRADER") != "1",
+    reason="half a minute: runs in CI's nbgrader step "
+    "(EULERLIB_NBGRADER=1 python -m pytest course/tests/test_graded.py)",
+)
 def test_the_search_finds_the_reference_where_the_key_is_installed(tmp_path: Path) -> None:
+    """The search of the test above can fail: on the full package it finds every reference.
+    (It imports every module of the course, so it takes long: it runs in CI's nbgrader step.)"""
     full = tmp_path / "site"
     shutil.copytree(PACKAGE, full / "eulerlib_course")
     wanted = {s: {i: reference(i, s) for i in seeded()} for s in STUDENTS}
