@@ -362,6 +362,18 @@ def test_an_infinity_minus_an_infinity_is_found_without_a_warning() -> None:
 # --- how a number array is read ---------------------------------------------------------------
 
 
+@pytest.mark.parametrize("lead", [(5,), (2, 4), (2, 1, 3)])
+def test_the_entries_of_a_stack_are_laid_out_row_by_row(lead) -> None:
+    """Row ``3 i + j`` holds ``R[..., i, j]``, for a stack of any number of leading axes."""
+    R = np.arange(9 * int(np.prod(lead)), dtype=np.float64).reshape(*lead, 3, 3)
+    entries = matrix_entries(R)
+    assert entries.shape == (9, *lead)
+    assert entries.flags.c_contiguous
+    for i in range(3):
+        for j in range(3):
+            assert_array_equal(entries[3 * i + j], R[..., i, j])
+
+
 def test_a_float64_array_is_checked_in_place_not_copied() -> None:
     """The docstring's promise: a copy only when the dtype changes (a million matrices stay one)."""
     angles = np.arange(12.0).reshape(4, 3)
