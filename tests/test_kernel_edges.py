@@ -359,6 +359,32 @@ def test_an_infinity_minus_an_infinity_is_found_without_a_warning() -> None:
             euler_to_matrix([[0.0, np.inf, -np.inf]], "ZYX")
 
 
+# --- the reasons given in full -----------------------------------------------------------------
+
+
+def test_a_reflection_is_refused_with_the_whole_reason() -> None:
+    with pytest.raises(
+        ValueError,
+        match=r"^R is closest to a reflection \(determinant < 0\), so it cannot be repaired into "
+        r"a rotation$",
+    ):
+        matrix_to_euler(np.diag([1.0, 1.0, -1.0]), "ZYX", repair=True)
+
+
+@pytest.mark.parametrize(
+    ("call", "start"),
+    [
+        (lambda: axis_angle_to_matrix([0.0, 0.0, 0.0], 1.0), "axis is zero: a rotation axis"),
+        (lambda: quaternion_to_matrix([0.0, 0.0, 0.0, 0.0]), "q is zero: a quaternion"),
+    ],
+)
+def test_a_zero_vector_is_refused_with_the_whole_reason(call, start) -> None:
+    with pytest.raises(ValueError) as caught:
+        call()
+    reason = " cannot be normalized, since a zero vector has no direction"
+    assert str(caught.value) == start + reason
+
+
 # --- how a number array is read ---------------------------------------------------------------
 
 
