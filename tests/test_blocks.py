@@ -9,7 +9,7 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 import eulerlib
-from eulerlib._blocks import BLOCK_SIZE
+from eulerlib._blocks import BLOCK_SIZE, block_slices
 
 # More rotations than two blocks, in a leading shape of two axes.
 SHAPE = (3, BLOCK_SIZE - 5)
@@ -60,3 +60,13 @@ def test_one_warning_counts_the_locks_of_every_block(angles: np.ndarray) -> None
         eulerlib.matrix_to_euler(R, "ZYX")
     assert len(caught) == 1
     assert f"gimbal lock in 2 of {R[..., 0, 0].size} rotation(s)" in str(caught[0].message)
+
+
+@pytest.mark.parametrize(("count", "size"), [(0, 3), (1, 3), (5, 2), (6, 3), (7, 16384)])
+def test_the_blocks_cut_the_range_into_consecutive_pieces(count: int, size: int) -> None:
+    blocks = list(block_slices(count, size))
+    covered = [i for block in blocks for i in range(count)[block]]
+    assert covered == list(range(count))  # every index once, in order
+    assert all(block.stop - block.start == size for block in blocks[:-1])
+    assert len(blocks) == -(-count // size)
+    assert list(block_slices(5, 2)) == [slice(0, 2), slice(2, 4), slice(4, 5)]

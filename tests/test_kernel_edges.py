@@ -38,7 +38,7 @@ from eulerlib import (
 from eulerlib._blocks import BLOCK_SIZE
 from eulerlib._euler_kernels import intrinsic_angles, lock_distance
 from eulerlib._trig import quarter_turns, sin_cos
-from eulerlib._validation import matrix_entries
+from eulerlib._validation import as_float_array, matrix_entries
 
 # --- repairing a matrix that is too far from a rotation ---------------------------------------
 
@@ -349,6 +349,102 @@ def test_finite_numbers_whose_sum_overflows_are_finite() -> None:
         warnings.simplefilter("error")
         R = euler_to_matrix([[1.7e308, 1.7e308, 1.7e308], [-1.7e308, 0.0, 1.7e308]], "ZYX")
     assert np.all(np.isfinite(R))
+
+
+def test_an_infinity_minus_an_infinity_is_found_without_a_warning() -> None:
+    """inf + (−inf) in the quick sum is an invalid operation; the check keeps it quiet."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(ValueError, match=r"^angles must be finite, got inf at index \(0, 1\)$"):
+            euler_to_matrix([[0.0, np.inf, -np.inf]], "ZYX")
+
+
+# --- the reasons given in full -----------------------------------------------------------------
+
+
+def test_a_reflection_is_refused_with_the_whole_reason() -> None:
+    with pytest.raises(
+        ValueError,
+        match=r"^R is closest to a reflection \(determinant < 0\), so it cannot be repaired into "
+        r"a rotation$",
+    ):
+        matrix_to_euler(np.diag([1.0, 1.0, -1.0]), "ZYX", repair=True)
+
+
+@pytest.mark.parametrize(
+    ("call", "start"),
+    [
+        (lambda: axis_angle_to_matrix([0.0, 0.0, 0.0], 1.0), "axis is zero: a rotation axis"),
+        (lambda: quaternion_to_matrix([0.0, 0.0, 0.0, 0.0]), "q is zero: a quaternion"),
+    ],
+)
+def test_a_zero_vector_is_refused_with_the_whole_reason(call, start) -> None:
+    with pytest.raises(ValueError) as caught:
+        call()
+    reason = " cannot be normalized, since a zero vector has no direction"
+    assert str(caught.value) == start + reason
+
+
+# --- how a number array is read ---------------------------------------------------------------
+
+
+@pytest.mark.parametrize("lead", [(5,), (2, 4), (2, 1, 3)])
+def test_the_entries_of_a_stack_are_laid_out_row_by_row(lead) -> None:
+    """Row ``3 i + j`` holds ``R[..., i, j]``, for a stack of any number of leading axes."""
+    R = np.arange(9 * int(np.prod(lead)), dtype=np.float64).reshape(*lead, 3, 3)
+    entries = matrix_entries(R)
+    assert entries.shape == (9, *lead)
+    assert entries.flags.c_contiguous
+    for i in range(3):
+        for j in range(3):
+            assert_array_equal(entries[3 * i + j], R[..., i, j])
+
+
+def test_a_float64_array_is_checked_in_place_not_copied() -> None:
+    """The docstring's promise: a copy only when the dtype changes (a million matrices stay one)."""
+    angles = np.arange(12.0).reshape(4, 3)
+    assert np.shares_memory(as_float_array(angles, "angles"), angles)
+    single = angles.astype(np.float32)
+    read = as_float_array(single, "angles")
+    assert read.dtype == np.float64
+    assert not np.shares_memory(read, single)
+    assert_array_equal(read, angles)
+
+
+def test_the_refusal_of_a_masked_array_says_how_to_drop_the_mask() -> None:
+    masked = np.ma.masked_array([1.0, 2.0, 3.0], mask=[False, True, False])
+    with pytest.raises(TypeError) as caught:
+        euler_to_matrix(masked, "ZYX")
+    message = str(caught.value)
+    for advice in ("angles.filled(...)", "angles.compressed()", "indexing with ~mask"):
+        assert advice in message
+
+
+@pytest.mark.parametrize(
+    ("value", "dtype"),
+    [
+        (np.array(["2026-12-01"] * 3, dtype="datetime64[D]"), "datetime64[D]"),
+        (np.array([1, 2, 3], dtype="timedelta64[s]"), "timedelta64[s]"),
+        (np.zeros(3, dtype=[("a", np.float64)]), "[('a', '<f8')]"),
+    ],
+)
+def test_an_array_of_times_or_records_is_refused_with_its_dtype(value, dtype) -> None:
+    with pytest.raises(TypeError, match=r"^angles must be real numbers, got dtype (.*)$") as caught:
+        euler_to_matrix(value, "ZYX")
+    assert str(caught.value) == f"angles must be real numbers, got dtype {dtype}"
+
+
+class _OverflowingArrayLike:
+    """An array-like whose conversion overflows, as a list mixing floats and a huge int did in
+    older NumPy and may in other array libraries."""
+
+    def __array__(self, dtype: object = None, copy: object = None) -> np.ndarray:
+        raise OverflowError("int too large to convert to float")
+
+
+def test_an_overflow_while_reading_an_array_names_the_argument() -> None:
+    with pytest.raises(ValueError, match=r"^angles holds a number too large for a float"):
+        euler_to_matrix(_OverflowingArrayLike(), "ZYX")
 
 
 # --- the keywords of the rotation check are named when wrong ----------------------------------
