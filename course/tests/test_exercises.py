@@ -336,6 +336,50 @@ def test_every_student_copy_runs_for_two_students_and_the_solutions_pass(
             )
 
 
+@notebook_params
+def test_rows_written_with_the_given_data_hold_for_each_students_data(path: Path) -> None:
+    """The rows of a per-student exercise's table that compute from the question's data (not
+    typed-in numbers) get the same verdict with each student's own data (a wrong one may get
+    another diagnosis: atan, for one, goes wrong in another angle for other data)."""
+    from eulerlib_course.exercises.predictions import forget
+
+    seeded = {k.id: k for k in key_of(path) if k.per_student is not None}
+    if not seeded:
+        pytest.skip("no per-student data in this notebook")
+    teacher = read(path)
+    for student in STUDENTS:
+        copy = student_copy(teacher, student)
+        namespace: dict[str, Any] = {}
+        with as_student(None):
+            first = next(cell for cell in copy.cells if cell.cell_type == "code")
+            run(without_magics(first.source), namespace)
+            name_cell = next(cell for cell in copy.cells if "student_name(" in cell.source)
+            run(name_cell.source, namespace)
+            forget()
+            names: set[str] = set()  # the data the questions give, so far in the notebook
+            for exercise, _, check in exercise_cells(copy):
+                exercise_id = CHECK_CELL.fullmatch(check.source.strip()).group(1)  # type: ignore[union-attr]
+                for group in re.findall(r"^(\w+(?:, \w+)*) = given\(", exercise.source, re.M):
+                    names |= set(group.split(", "))
+                if exercise_id not in seeded:
+                    continue
+                rows = [
+                    e
+                    for e in seeded[exercise_id].examples
+                    if names & set(re.findall(r"\w+", e.code))
+                ]
+                assert rows, f"{exercise_id}: no row computes from the question's data"
+                for example in rows:
+                    source = PLACEHOLDER.sub(
+                        lambda m, c=example.code: f"{m.group(1)} = {c}", exercise.source
+                    )
+                    run(source, namespace)
+                    feedback, _ = run(check.source, namespace)
+                    where = f"{student}, {exercise_id}, {example.code!r}: {feedback}"
+                    assert feedback.status == example.status, where
+            forget()
+
+
 def test_per_student_data_differ_between_students_and_from_the_teachers() -> None:
     import numpy as np
 
