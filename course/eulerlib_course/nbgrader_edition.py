@@ -180,7 +180,10 @@ def _key_source(exercise_id: str) -> str:
 
 
 def _form_call(exercise_id: str, answer: str) -> str:
-    form = form_of(exercises()[exercise_id].judge)
+    key = exercises()[exercise_id]
+    form = form_of(key.judge)
+    if key.level == "predict":
+        form["prediction"] = True  # recorded, for the cell that settles it
     arguments = "".join(f", {name}={value!r}" for name, value in form.items())
     return (
         "from eulerlib_course.exercises.graded import check_form\n\n"

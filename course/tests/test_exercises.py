@@ -37,6 +37,7 @@ KEY = exercises()
 
 CHECK_CELL = re.compile(r'check\("(\d\d\.\d)", (answer_\d)\)')
 PLACEHOLDER = re.compile(r"^(answer_\d) = \.\.\.\s*$", re.MULTILINE)
+SETTLE_CELL = re.compile(r'^settle\(\s*"(\d\d\.\d)"', re.MULTILINE)
 LEVELS = ("apply", "predict", "extend")
 
 notebook_params = pytest.mark.parametrize("path", NOTEBOOKS, ids=IDS)
@@ -140,6 +141,63 @@ def test_every_exercise_of_the_key_is_in_a_notebook() -> None:
     assert set(KEY) == in_notebooks
 
 
+def settle_cells(notebook: Any) -> dict[str, tuple[int, Any]]:
+    """The cells that settle a prediction, by exercise, with their positions."""
+    found: dict[str, tuple[int, Any]] = {}
+    for position, cell in enumerate(notebook.cells):
+        match = SETTLE_CELL.search(cell.source) if cell.cell_type == "code" else None
+        if match:
+            assert match.group(1) not in found, f"{match.group(1)} is settled twice"
+            found[match.group(1)] = (position, cell)
+    return found
+
+
+@notebook_params
+def test_every_prediction_is_settled_right_after_its_check(path: Path) -> None:
+    notebook = read(path)
+    settled = settle_cells(notebook)
+    predictions = {k.id for k in key_of(path) if k.level == "predict"}
+    assert set(settled) == predictions, f"{path.name}: settle cells {sorted(settled)}"
+    for exercise_id, (position, cell) in settled.items():
+        before = notebook.cells[position - 1]
+        assert before.source.strip() == f'check("{exercise_id}", answer_{exercise_id[-1]})', (
+            f"{path.name}: the cell that settles {exercise_id} does not follow its check"
+        )
+        assert not {"exercise", "solution", "check"} & set(tags(cell)), path.name
+        text = "".join(o.get("data", {}).get("text/plain", "") for o in cell.get("outputs", []))
+        assert text and "predict first" not in text, f"{path.name}: {exercise_id} shows {text!r}"
+
+
+@notebook_params
+def test_without_a_prediction_the_settle_cell_says_so_and_shows_nothing(path: Path) -> None:
+    import matplotlib.pyplot as plt
+
+    from eulerlib_course.exercises.predictions import forget
+
+    copy = student_copy(read(path))
+    settled = settle_cells(copy)
+    first = next(cell for cell in copy.cells if cell.cell_type == "code")
+    namespace: dict[str, Any] = {}
+    run(without_magics(first.source), namespace)
+    forget()
+    try:
+        for exercise, _, check in exercise_cells(copy):
+            exercise_id = CHECK_CELL.fullmatch(check.source.strip()).group(1)  # type: ignore[union-attr]
+            if exercise_id not in settled:
+                continue
+            if PLACEHOLDER.fullmatch(exercise.source.strip()):  # nothing but answer_k = ...
+                run(exercise.source, namespace)
+                feedback, _ = run(check.source, namespace)
+                assert feedback.status == "not yet", f"{exercise_id}: {feedback}"
+            plt.close("all")
+            value, printed = run(settled[exercise_id][1].source, namespace)
+            assert isinstance(value, str) and "\n" not in value, f"{exercise_id}: {value!r}"
+            assert value.startswith("predict first") and exercise_id in value, value
+            assert printed == "" and not plt.get_fignums(), f"{exercise_id} showed something"
+    finally:
+        forget()
+
+
 def test_test_tables_have_equivalent_answers_and_typical_mistakes() -> None:
     for exercise in KEY.values():
         right = [e for e in exercise.examples if e.status == "correct"]
@@ -216,7 +274,8 @@ def run_copies_with_solutions(path: Path, students: tuple[str, ...]) -> dict[str
 
     The first student's copy runs whole; for the next ones only the cells that depend on whose
     copy it is run again, in the same kernel's namespace: the name cell and each exercise's
-    cell, solution and check (the rest of a notebook gives every student the same).
+    cell, solution and check, and the cells that settle a prediction (the rest of a notebook
+    gives every student the same). What a settle cell shows is kept as ``"settled NN.k"``.
     """
     import matplotlib.pyplot as plt
 
@@ -238,7 +297,8 @@ def run_copies_with_solutions(path: Path, students: tuple[str, ...]) -> dict[str
                 if cell.cell_type != "code":
                     continue
                 is_name = "student_name(" in cell.source
-                if number and not (is_name or {"exercise", "check"} & set(tags(cell))):
+                settles = SETTLE_CELL.search(cell.source)
+                if number and not (is_name or settles or {"exercise", "check"} & set(tags(cell))):
                     continue
                 value, _ = run(without_magics(cell.source), namespace)
                 match = CHECK_CELL.fullmatch(cell.source.strip())
@@ -250,6 +310,8 @@ def run_copies_with_solutions(path: Path, students: tuple[str, ...]) -> dict[str
                     )
                 if match:
                     results[student][match.group(1)] = value
+                if settles:
+                    results[student][f"settled {settles.group(1)}"] = value
                 plt.close("all")
             forget()
     return results
@@ -260,10 +322,62 @@ def test_every_student_copy_runs_for_two_students_and_the_solutions_pass(
     path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     monkeypatch.chdir(path.parent)  # where the notebooks read their data from
-    for student, feedback in run_copies_with_solutions(path, STUDENTS).items():
+    for student, results in run_copies_with_solutions(path, STUDENTS).items():
+        feedback = {k: v for k, v in results.items() if not k.startswith("settled ")}
         assert set(feedback) == {k.id for k in key_of(path)}, student
         for exercise_id, verdict in feedback.items():
             assert verdict.status == "correct", f"{student}, {exercise_id}: {verdict}"
+        predictions = {k.id for k in key_of(path) if k.level == "predict"}
+        assert {k[len("settled ") :] for k in results if k.startswith("settled ")} == predictions
+        for exercise_id in predictions:
+            shown = results[f"settled {exercise_id}"]
+            assert not (isinstance(shown, str) and shown.startswith("predict first")), (
+                f"{student}, {exercise_id}: the settle cell refused after the prediction"
+            )
+
+
+@notebook_params
+def test_rows_written_with_the_given_data_hold_for_each_students_data(path: Path) -> None:
+    """The rows of a per-student exercise's table that compute from the question's data (not
+    typed-in numbers) get the same verdict with each student's own data (a wrong one may get
+    another diagnosis: atan, for one, goes wrong in another angle for other data)."""
+    from eulerlib_course.exercises.predictions import forget
+
+    seeded = {k.id: k for k in key_of(path) if k.per_student is not None}
+    if not seeded:
+        pytest.skip("no per-student data in this notebook")
+    teacher = read(path)
+    for student in STUDENTS:
+        copy = student_copy(teacher, student)
+        namespace: dict[str, Any] = {}
+        with as_student(None):
+            first = next(cell for cell in copy.cells if cell.cell_type == "code")
+            run(without_magics(first.source), namespace)
+            name_cell = next(cell for cell in copy.cells if "student_name(" in cell.source)
+            run(name_cell.source, namespace)
+            forget()
+            names: set[str] = set()  # the data the questions give, so far in the notebook
+            for exercise, _, check in exercise_cells(copy):
+                exercise_id = CHECK_CELL.fullmatch(check.source.strip()).group(1)  # type: ignore[union-attr]
+                for group in re.findall(r"^(\w+(?:, \w+)*) = given\(", exercise.source, re.M):
+                    names |= set(group.split(", "))
+                if exercise_id not in seeded:
+                    continue
+                rows = [
+                    e
+                    for e in seeded[exercise_id].examples
+                    if names & set(re.findall(r"\w+", e.code))
+                ]
+                assert rows, f"{exercise_id}: no row computes from the question's data"
+                for example in rows:
+                    source = PLACEHOLDER.sub(
+                        lambda m, c=example.code: f"{m.group(1)} = {c}", exercise.source
+                    )
+                    run(source, namespace)
+                    feedback, _ = run(check.source, namespace)
+                    where = f"{student}, {exercise_id}, {example.code!r}: {feedback}"
+                    assert feedback.status == example.status, where
+            forget()
 
 
 def test_per_student_data_differ_between_students_and_from_the_teachers() -> None:

@@ -256,6 +256,43 @@ def test_the_form_check_says_nothing_about_right_or_wrong() -> None:
     assert check_form("07.2", ("e", 1.0), **choice).status == "off"
 
 
+def test_a_prediction_is_recorded_and_settled_without_the_key(keyless: Path) -> None:
+    choice = form_of(KEY["07.2"].judge)
+    program = (
+        "from eulerlib_course.exercises import settle\n"
+        "from eulerlib_course.exercises.graded import check_form\n"
+        "print(settle('07.2', lambda: 'computed'))\n"
+        f"print(check_form('07.2', ('a', ...), prediction=True, **{choice!r}).status)\n"
+        f"print(check_form('07.2', ('a', 12.0), prediction=True, **{choice!r}).status)\n"
+        "print(settle('07.2', lambda: 'computed'))\n"
+    )
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(keyless), str(REPO)]))
+    out = subprocess.run(
+        [sys.executable, "-c", program], env=env, capture_output=True, text=True, cwd=keyless
+    )
+    assert out.returncode == 0, out.stderr
+    refused, blank, received, computed = out.stdout.splitlines()
+    assert refused.startswith("predict first") and "07.2" in refused
+    assert (blank, received, computed) == ("not yet", "received", "computed")
+
+
+def test_graded_mode_counts_the_prediction_made_before_the_computation() -> None:
+    from eulerlib_course.exercises.graded import grade
+    from eulerlib_course.exercises.predictions import forget, settle
+
+    forget()
+    try:
+        choice = form_of(KEY["07.2"].judge)
+        assert check_form("07.2", ("a", 12.0), prediction=True, **choice).status == "received"
+        assert settle("07.2", lambda: "computed") == "computed"
+        late = grade(KEY.values(), "07.2", ("c", 160.0))
+        assert late.status == "off"
+        forget()
+        assert grade(KEY.values(), "07.2", ("c", 160.0)).status == "correct"
+    finally:
+        forget()
+
+
 def test_check_without_the_key_says_answers_are_graded_when_handed_in(keyless: Path) -> None:
     env = dict(os.environ, PYTHONPATH=os.pathsep.join([str(keyless), str(REPO)]))
     program = (

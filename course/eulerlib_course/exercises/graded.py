@@ -77,8 +77,11 @@ def _form_verdict(answer: object, form: dict[str, Any], what: str) -> str | None
     return None
 
 
-def check_form(exercise: str, answer: object, **form: Any) -> Feedback:
+def check_form(exercise: str, answer: object, *, prediction: bool = False, **form: Any) -> Feedback:
     """Check only the form of an answer (graded mode's visible check).
+
+    With ``prediction=True`` (a *predict* exercise) an answer of the right form is recorded as
+    the prediction, as :func:`~.key.check` records it (see :mod:`.predictions`).
 
     Examples
     --------
@@ -92,20 +95,47 @@ def check_form(exercise: str, answer: object, **form: Any) -> Feedback:
     hint = NO_STUDENT if current_student() is None else ""
     if answer is Ellipsis or (isinstance(answer, str) and not answer.strip()):
         return Feedback(exercise, "not yet", NOT_YET + hint)
+    options = form.get("options")
+    if (
+        prediction
+        and options is not None
+        and isinstance(answer, (tuple, list))
+        and len(answer) == 2
+        and answer[1] is Ellipsis
+        and _form_verdict(answer[0], {"options": options}, "your answer") is None
+    ):
+        from .predictions import record
+
+        record(exercise.strip(), answer)
+        return Feedback(
+            exercise,
+            "not yet",
+            f"your prediction {answer[0].strip().lower()!r} is recorded; now compute the value "
+            "and put it in place of the ...",
+        )
     wrong = _form_verdict(answer, form, "your answer")
     if wrong is not None:
         return Feedback(exercise, "off", wrong)
+    if prediction:
+        from .predictions import record
+
+        record(exercise.strip(), answer)
     return Feedback(exercise, "received", RECEIVED.format(what="your answer") + hint)
 
 
 def grade(exercises: Iterable[Any], exercise: str, answer: object) -> Feedback:
     """Grade ``answer`` with the key ``exercises`` (the hidden test's own copy of the key),
-    for the current student's data."""
+    for the current student's data; for a *predict* exercise the answer that counts is the
+    prediction recorded before the computation that settles it."""
     key = next((e for e in exercises if e.id == exercise), None)
     if key is None:
         raise ValueError(f"the answer key given has no exercise {exercise!r}")
     if answer is Ellipsis or (isinstance(answer, str) and not answer.strip()):
         return Feedback(key.id, "not yet", NOT_YET)
+    if key.level == "predict":
+        from .predictions import record
+
+        answer = record(key.id, answer)
     try:
         verdict = key.judge_for().judge(answer)
     except Unreadable as reason:

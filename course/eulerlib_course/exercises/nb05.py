@@ -44,8 +44,16 @@ def _some_ypr(rng: np.random.Generator) -> list[float]:
     ]
 
 
+def _past_a_quadrant(rng: np.random.Generator) -> float:
+    """A whole number of degrees, 105° to 165° either way: outside atan's ±90°, away from ±180°."""
+    return float(rng.choice([-1.0, 1.0])) * _some_angle(rng, 105, 165, ())
+
+
 def _matrix_of_some_ypr(rng: np.random.Generator) -> NDArray[np.float64]:
-    return euler_to_matrix(_some_ypr(rng), "rose", degrees=True)
+    """A student's matrix for 05.1 and 05.2: yaw and roll both past a quadrant, as the
+    teacher's, so that reading either with atan instead of atan2 is a mistake for everyone."""
+    yaw, pitch, roll = _past_a_quadrant(rng), _some_angle(rng, -75, 75, (0,)), _past_a_quadrant(rng)
+    return euler_to_matrix([yaw, pitch, roll], "rose", degrees=True)
 
 
 def _matrix_of_some_xyz(rng: np.random.Generator) -> NDArray[np.float64]:
@@ -186,6 +194,17 @@ EXERCISES = [
             Example("[80, 145, 160]", "off", "both outer angles"),
             Example("[260, 145, 340]", "off", "both outer angles"),
             Example("[-100, 145, 160]", "off", "each turn by 180°"),
+            # the same two, computed from R_ex, so that they hold for every student's data
+            Example(
+                "(lambda y, p, r: [y + 180, 180 - p, r + 180])"
+                "(*matrix_to_euler(R_ex, 'rose', degrees=True))",
+                "correct",
+            ),
+            Example(
+                "(lambda y, p, r: [y, 180 - p, r])(*matrix_to_euler(R_ex, 'rose', degrees=True))",
+                "off",
+                "each turn by 180°",
+            ),
         ),
         forbidden=("80, 145", "145"),
     ),

@@ -55,8 +55,40 @@ def _turned_on_the_left(fraction: float) -> NDArray[np.float64]:
 _Q0 = euler_to_quaternion([20.0, 10.0, -30.0], "rose", degrees=True)
 _Q1 = -euler_to_quaternion([75.0, -15.0, 20.0], "rose", degrees=True)  # q0 · q1 < 0
 assert _Q0 @ _Q1 < 0
-_MIDDLE = _shoemake(_Q0, -_Q1, 0.5)
-_LONG_WAY = (_Q0 + _Q1) / np.linalg.norm(_Q0 + _Q1)
+
+
+def _some_far_pair(rng: np.random.Generator) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """A student's q0 and q1: two attitudes of whole-degree Rose angles, 30° to 150° apart, with
+    q1's sign chosen so that q0 · q1 < 0 (the short way needs −q1)."""
+    while True:
+        low, high = [-170, -80, -170], [171, 81, 171]
+        q0, q1 = (
+            euler_to_quaternion(rng.integers(low, high).astype(float), "rose", degrees=True)
+            for _ in range(2)
+        )
+        if q0 @ q1 > 0:
+            q1 = -q1
+        if math.cos(math.radians(75.0)) <= -float(q0 @ q1) <= math.cos(math.radians(15.0)):
+            return q0, q1
+
+
+def _judge_halfway(pair: tuple[NDArray[np.float64], NDArray[np.float64]]) -> QuaternionJudge:
+    q0, q1 = (np.asarray(q, dtype=np.float64) for q in pair)
+    long_way = (q0 + q1) / np.linalg.norm(q0 + q1)
+    return QuaternionJudge(
+        _shoemake(q0, -q1, 0.5),
+        scalar_first=False,
+        what="your quaternion",
+        mistakes=(
+            Mistake(
+                long_way,
+                "that is the middle of the long way round: q0 · q1 < 0, so q1 lies on the "
+                "far side of the sphere; −q1 is the same rotation on the near side. Flip q1 "
+                "first",
+            ),
+        ),
+    )
+
 
 EXERCISES = [
     Exercise(
@@ -158,19 +190,9 @@ EXERCISES = [
     Exercise(
         id="12.3",
         level="extend",
-        judge=QuaternionJudge(
-            _MIDDLE,
-            scalar_first=False,
-            what="your quaternion",
-            mistakes=(
-                Mistake(
-                    _LONG_WAY,
-                    "that is the middle of the long way round: q0 · q1 < 0, so q1 lies on the "
-                    "far side of the sphere; −q1 is the same rotation on the near side. Flip q1 "
-                    "first",
-                ),
-            ),
-        ),
+        judge=_judge_halfway((_Q0, _Q1)),
+        per_student=_some_far_pair,
+        judged=_judge_halfway,
         given=lambda: (_Q0.copy(), _Q1.copy()),
         examples=(
             Example(

@@ -76,6 +76,37 @@ def _nearest(M: Array) -> Array:
     return result
 
 
+def _some_drifted(rng: np.random.Generator) -> Array:
+    """A student's drifted matrix: a rotation of whole-degree Rose angles plus noise of size
+    0.3e-3 to 1.6e-3 in every entry, of either sign, to four decimals (as the teacher's)."""
+    angles = rng.integers([-170, -80, -170], [171, 81, 171]).astype(float)
+    size = rng.integers(3, 17, (3, 3)) * 1e-4
+    sign = rng.choice([-1.0, 1.0], (3, 3))
+    drifted: Array = euler_to_matrix(angles, "rose", degrees=True) + sign * size
+    return drifted
+
+
+def _judge_repair(M: Array) -> ArrayJudge:
+    M = np.asarray(M, dtype=np.float64)
+    return ArrayJudge(
+        _keep_column(M, 2),
+        what="your repaired matrix",
+        rotation=True,
+        mistakes=(
+            Mistake(
+                _nearest(M),
+                "this is the nearest rotation (the SVD), which moves all three columns a "
+                "little; the question keeps the direction of column 3 (z) exactly",
+            ),
+            Mistake(
+                _keep_column(M, 0),
+                "this Gram–Schmidt keeps the direction of column 1 (x); the question keeps "
+                "column 3 (z) and then as much of column 1 as it can",
+            ),
+        ),
+    )
+
+
 EXERCISES = [
     Exercise(
         id="13.1",
@@ -201,23 +232,9 @@ EXERCISES = [
     Exercise(
         id="13.3",
         level="extend",
-        judge=ArrayJudge(
-            _keep_column(_DRIFTED, 2),
-            what="your repaired matrix",
-            rotation=True,
-            mistakes=(
-                Mistake(
-                    _nearest(_DRIFTED),
-                    "this is the nearest rotation (the SVD), which moves all three columns a "
-                    "little; the question keeps the direction of column 3 (z) exactly",
-                ),
-                Mistake(
-                    _keep_column(_DRIFTED, 0),
-                    "this Gram–Schmidt keeps the direction of column 1 (x); the question keeps "
-                    "column 3 (z) and then as much of column 1 as it can",
-                ),
-            ),
-        ),
+        judge=_judge_repair(_DRIFTED),
+        per_student=_some_drifted,
+        judged=_judge_repair,
         given=lambda: _DRIFTED.copy(),
         examples=(
             # QR is Gram–Schmidt: on the columns (z, x, y), with the signs made positive

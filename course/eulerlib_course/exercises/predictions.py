@@ -14,7 +14,7 @@ from collections.abc import Callable
 from typing import Any
 
 from .feedback import Feedback
-from .key import _blank, _lookup, check
+from .key import _ID, _blank, _lookup, check, exercises
 
 __all__ = ["predict", "prediction", "settle"]
 
@@ -82,11 +82,18 @@ def settle(exercise: str, computation: Callable[[], Any]) -> Any:
     >>> settle("07.2", lambda: 180.0)
     'predict first: give your answer to exercise 07.2 and run its check cell'
     """
-    key = _lookup(exercise)
-    if key.id not in _PREDICTIONS:
-        return f"predict first: give your answer to exercise {key.id} and run its check cell"
-    _SETTLED.add(key.id)
+    exercise_id = _settled_id(exercise)
+    if exercise_id not in _PREDICTIONS:
+        return f"predict first: give your answer to exercise {exercise_id} and run its check cell"
+    _SETTLED.add(exercise_id)
     return computation()
+
+
+def _settled_id(exercise: object) -> str:
+    """The id of ``exercise``; without the answer key (graded mode) any id of the form 'NN.k'."""
+    if isinstance(exercise, str) and not exercises() and _ID.fullmatch(exercise.strip()):
+        return exercise.strip()
+    return _lookup(exercise).id
 
 
 def forget() -> None:
