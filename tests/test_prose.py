@@ -81,8 +81,8 @@ def test_numbers_in_prose_are_printed_or_asserted_by_code(path: Path) -> None:
 
 
 #: An explicit anchor in a glossary heading, for a term whose spelling JupyterLab would not turn
-#: into the anchor the notebooks link to (``### <a id="ned"></a>NED``).
-_EXPLICIT_ANCHOR = re.compile(r'<a id="([^"]+)"></a>')
+#: into the anchor the notebooks link to (``### <span id="ned"></span>NED``).
+_EXPLICIT_ANCHOR = re.compile(r'<span id="([^"]+)"></span>')
 
 
 def glossary_headings() -> list[str]:
