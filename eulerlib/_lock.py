@@ -144,26 +144,28 @@ class GimbalLockWarning(UserWarning):
         chosen = self.convention
         label = chosen.quoted_label
         first, middle, third = chosen.angle_names
-        defined = "; ".join(
-            f"{combination} at {pole}°" if len(self.combinations) > 1 else combination
-            for pole, combination in self.combinations.items()
-        )
         poles = " or ".join(f"{pole}°" for pole in self.combinations)
         situation = (
             f"gimbal lock in {self.count} of {self.total} rotation(s) for {label}: {middle} is "
             f"at {poles}, so {first} and {third} turn about the same axis"
         )
+        rate = "the rate of " if self.rates else ""
+        if len(self.combinations) == 1:
+            (combination,) = self.combinations.values()
+            defined = f"only {rate}{combination} is defined"
+        else:  # both poles met: each has its own combination, named with the pole
+            each = ", ".join(f"{words} at {pole}°" for pole, words in self.combinations.items())
+            defined = f"at each pole only {rate}one combination of them is defined ({each})"
         position = f"(angle {self.zeroed_position + 1})"
         if self.rates:
             return (
-                f"{situation} and only the rate of {defined} is defined; the rate of "
-                f"{self.zeroed} {position} was set to 0, the rate of {self.carrier} carries the "
-                "whole turn, and the part of the angular velocity that no angle rates can "
-                "produce was left out"
+                f"{situation} and {defined}; the rate of {self.zeroed} {position} was set to 0, "
+                f"the rate of {self.carrier} carries the whole turn, and the part of the angular "
+                "velocity that no angle rates can produce was left out"
             )
         return (
-            f"{situation} and only {defined} is defined; {self.zeroed} {position} was set to 0 "
-            f"and {self.carrier} carries the whole turn"
+            f"{situation} and {defined}; {self.zeroed} {position} was set to 0 and "
+            f"{self.carrier} carries the whole turn"
         )
 
     def __reduce__(self) -> tuple[object, ...]:  # so that a warning can be pickled and rebuilt

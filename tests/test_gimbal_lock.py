@@ -184,6 +184,22 @@ def test_one_warning_per_call_at_lock(seq, rng):
     assert caught[0].filename == __file__  # stacklevel points at the caller
 
 
+@pytest.mark.parametrize("seq", ALL_SEQUENCES)
+def test_warning_at_both_poles_reads_as_one_sentence(seq, rng):
+    # Each pole's combination is named once with its pole, and the one semicolon parts what is
+    # defined from what was chosen.
+    with pytest.warns(GimbalLockWarning) as record:
+        matrix_to_euler(lock_batch(seq, rng), seq)
+    facts = record[0].message
+    message = str(facts)
+    assert len(facts.combinations) == 2
+    assert "\n" not in message
+    assert message.count(";") == 1
+    defined = message.split(";")[0]
+    for pole, words in facts.combinations.items():
+        assert defined.count(f"{words} at {pole}°") == 1
+
+
 @pytest.mark.parametrize("seq", ["ZYX", "xyz", "ZXZ", "yzy"])
 def test_warning_names_the_zeroed_angle(seq, rng):
     with pytest.warns(GimbalLockWarning, match=r"\(angle \d\) was set to 0") as record:

@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any
 
 import nbformat
+import numpy as np
 import pytest
 
 REPO = Path(__file__).resolve().parents[1]
@@ -79,12 +80,26 @@ def test_numbers_in_prose_are_printed_or_asserted_by_code(path: Path) -> None:
     assert not stale, f"{path.name}: numbers in prose that no code line prints or asserts: {stale}"
 
 
+#: An explicit anchor in a glossary heading, for a term whose spelling JupyterLab would not turn
+#: into the anchor the notebooks link to (``### <span id="ned"></span>NED``).
+_EXPLICIT_ANCHOR = re.compile(r'<span id="([^"]+)"></span>')
+
+
+def glossary_headings() -> list[str]:
+    return [
+        heading.strip()
+        for cell in read(GLOSSARY).cells
+        for heading in re.findall(r"^#{3} (.+)$", cell.source, flags=re.MULTILINE)
+    ]
+
+
+def heading_anchor(heading: str) -> str:
+    explicit = _EXPLICIT_ANCHOR.search(heading)
+    return explicit.group(1) if explicit else heading.replace(" ", "-")
+
+
 def glossary_anchors() -> set[str]:
-    anchors = set()
-    for cell in read(GLOSSARY).cells:
-        for heading in re.findall(r"^#{2,4} (.+)$", cell.source, flags=re.MULTILINE):
-            anchors.add(heading.strip().lower().replace(" ", "-"))
-    return anchors
+    return {heading_anchor(heading) for heading in glossary_headings()}
 
 
 @notebook_params
@@ -101,11 +116,36 @@ def test_glossary_links_point_at_defined_terms(path: Path) -> None:
     assert not missing, f"{path.name} links to terms the glossary lacks: {missing}"
 
 
-def test_glossary_headings_are_plain_lowercase_words() -> None:
-    """So that the heading's anchor is the same in JupyterLab and on the website."""
-    for cell in read(GLOSSARY).cells:
-        for heading in re.findall(r"^#{3} (.+)$", cell.source, flags=re.MULTILINE):
-            assert re.fullmatch(r"[a-z0-9]+(?: [a-z0-9]+)*", heading), heading
+def test_glossary_anchors_are_the_same_in_jupyterlab_and_on_the_website() -> None:
+    """A term is spelt as it is written (NED, Rodrigues' formula) and linked by one anchor in both.
+
+    The website (MyST) makes a heading's anchor from its text in lower case, spaces as hyphens,
+    punctuation dropped; JupyterLab takes the text as it is, spaces as hyphens, or finds the
+    explicit anchor in the heading.
+    """
+    for heading in glossary_headings():
+        text = _EXPLICIT_ANCHOR.sub("", heading).strip()
+        anchor = heading_anchor(heading)
+        assert re.fullmatch(r"[a-z0-9]+(?:-[a-z0-9]+)*", anchor), heading
+        website = re.sub(r"[^\w\- ]", "", text.lower()).replace(" ", "-")
+        assert website == anchor, heading
+        jupyterlab = text.replace(" ", "-")
+        assert jupyterlab == anchor or _EXPLICIT_ANCHOR.search(heading), heading
+
+
+def test_glossary_gives_the_range_of_atan2_as_numpy_computes_it() -> None:
+    (cell,) = [cell for cell in read(GLOSSARY).cells if cell.source.startswith("### atan2")]
+    assert "$[-180°, 180°]$" in cell.source
+    assert np.degrees(np.arctan2(0.0, -1.0)) == 180.0
+    assert np.degrees(np.arctan2(-0.0, -1.0)) == -180.0
+
+
+def test_glossary_references_link_to_the_notebooks() -> None:
+    names = {path.name for path in NOTEBOOKS}
+    for cell in read(GLOSSARY).cells[1:]:
+        assert not re.search(r"\[\d\d(?:, \d\d)*\](?!\()", cell.source), cell.source[:40]
+        for number, target in re.findall(r"\[(\d\d)\]\(([^)]+)\)", cell.source):
+            assert target in names and target.startswith(number), target
 
 
 @notebook_params

@@ -363,9 +363,14 @@ def nbgrader_notebook(notebook: Any, name: str, *, graded: bool = False) -> Any:
 
 
 def _glossary_page(notebook: Any) -> str:
-    """The glossary's text as one Markdown file (its cells are Markdown)."""
+    """The glossary's text as one Markdown file (its cells are Markdown).
+
+    An assignment's folder holds its own notebook only, so the glossary's links to the course's
+    notebooks (``[[05](05_matrix_to_angles.ipynb)]``) become their plain numbers (``[05]``).
+    """
     parts = [cell.source.strip() for cell in notebook.cells if cell.cell_type == "markdown"]
-    return "\n\n".join(parts) + "\n"
+    text = "\n\n".join(parts) + "\n"
+    return re.sub(r"\[(\d\d)\]\(\d\d_[^)\s]*\.ipynb\)", r"\1", text)
 
 
 def _linking_glossary_page(notebook: Any) -> Any:

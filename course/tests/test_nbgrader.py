@@ -165,9 +165,8 @@ def write_small_course(folder: Path) -> Path:
     """The small course in ``folder``: notebook 05, the glossary and ``data/samples.csv``."""
     folder.mkdir(parents=True)
     nbformat.write(small_notebook(), str(folder / f"{SMALL}.ipynb"))
-    glossary = nbformat.v4.new_notebook(
-        cells=[md("# Glossary"), md("## Gimbal lock\n\nTwo axes of rotation line up.")]
-    )
+    term = "## Gimbal lock\n\nTwo axes of rotation line up. [[05](05_a.ipynb), [07](07_b.ipynb)]"
+    glossary = nbformat.v4.new_notebook(cells=[md("# Glossary"), md(term)])
     nbformat.write(glossary, str(folder / "glossary.ipynb"))
     (folder / "data").mkdir()
     (folder / "data" / "samples.csv").write_text("1,2,3\n4,5,6\n")
@@ -235,7 +234,7 @@ def test_command_writes_one_assignment_per_notebook_with_what_it_uses(
     compile(config, CONFIG_NAME, "exec")
     # The glossary is a page, not a second notebook of the assignment, and the links go there.
     glossary = (out / "source" / SMALL / "glossary.md").read_text(encoding="utf-8")
-    assert glossary == "# Glossary\n\n## Gimbal lock\n\nTwo axes of rotation line up.\n"
+    assert glossary == "# Glossary\n\n## Gimbal lock\n\nTwo axes of rotation line up. [05, 07]\n"
     notebook = read(out / "source" / SMALL / f"{SMALL}.ipynb")
     links = [c.source for c in notebook.cells if "glossary" in c.source]
     assert links == [
