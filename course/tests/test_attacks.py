@@ -131,6 +131,7 @@ def attack(exercise_id: str) -> None:
         raise AssertionError(f"{exercise_id}: no attack for {type(judge).__name__}")
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(("exercise_id", "student"), list(itertools.product(KEY, STUDENTS)))
 def test_an_attack_that_reads_only_the_feedback_fails(
     exercise_id: str, student: str | None

@@ -317,6 +317,7 @@ def run_copies_with_solutions(path: Path, students: tuple[str, ...]) -> dict[str
     return results
 
 
+@pytest.mark.slow
 @notebook_params
 def test_every_student_copy_runs_for_two_students_and_the_solutions_pass(
     path: Path, monkeypatch: pytest.MonkeyPatch
