@@ -283,7 +283,7 @@ def configure_site(parser: argparse.ArgumentParser) -> None:
         "Run it from the top folder of the repository.",
     )
     build.add_argument(
-        "--out", type=Path, help="folder for the website (default: build/site/); replaced"
+        "--out", type=output_folder, help="folder for the website (default: build/site/); replaced"
     )
     parser.set_defaults(run=run_site)
 

@@ -153,3 +153,14 @@ def test_the_working_copy_refuses_the_course_folder_and_an_empty_one(
     err = capsys.readouterr().err
     assert len(err.splitlines()) == 1 and message in err, err
     assert sorted(p.name for p in course.iterdir()) == ["01_a.ipynb"]
+
+
+def test_site_build_refuses_an_empty_out_like_every_course_command(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SystemExit) as exit_:
+        cli.main(["site", "build", "--out", ""])
+    assert exit_.value.code == 2
+    assert "--out: is empty" in capsys.readouterr().err
+    assert list(tmp_path.iterdir()) == []
