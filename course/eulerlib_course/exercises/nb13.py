@@ -1,8 +1,10 @@
-"""Answer key of notebook 13, angular velocity and Euler rates (ω from Ṙ Rᵀ, 1/cos(pitch), drift).
+"""Answer key of notebook 13, angular velocity and Euler rates (ω from Ṙ Rᵀ, 1/cos(pitch), drift,
+one step of integration as an exponential).
 
 The references are typed in from the formulas (the aircraft body rates p, q, r of yaw–pitch–roll;
-Gram–Schmidt written out), not taken from the library functions the notebook teaches; the test
-table's rows that call those functions must agree with them.
+Gram–Schmidt written out; Rodrigues' formula for the exponential of a skew matrix), not taken from
+the library functions the notebook teaches; the test table's rows that call those functions must
+agree with them.
 """
 
 from __future__ import annotations
@@ -105,6 +107,81 @@ def _judge_repair(M: Array) -> ArrayJudge:
             ),
         ),
     )
+
+
+# --- 13.4: one step of a gyroscope's constant rate, as an exponential ---------------------------
+
+_START_ANGLES = (20.0, -35.0, 60.0)  # Rose's yaw, pitch, roll of the attitude at the start, degrees
+_GYRO = (30.0, -45.0, 25.0)  # ᴮω, °/s about the body's x, y and z axes
+_STEP = 0.8  # s
+
+
+def _skew(v: Array) -> Array:
+    """[v]x, typed in."""
+    x, y, z = (float(c) for c in v)
+    return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
+
+
+def _exp_skew(rotvec: Array) -> Array:
+    """exp([v]x) by Rodrigues' formula, typed in: I + sin θ K + (1 - cos θ) K², K = [v/θ]x."""
+    theta = math.sqrt(float(rotvec @ rotvec))
+    K = _skew(rotvec / theta)
+    turn: Array = np.eye(3) + math.sin(theta) * K + (1.0 - math.cos(theta)) * (K @ K)
+    return turn
+
+
+def _some_step(rng: np.random.Generator) -> tuple[Array, Array, float]:
+    """A student's start attitude (whole-degree Rose angles), gyroscope rate (every component
+    20 to 60 °/s, of either sign) and step (0.5, 1 or 1.5 s): a turn of 17° to 156°."""
+    angles = rng.integers([-170, -80, -170], [171, 81, 171]).astype(float)
+    rate = rng.integers(20, 61, 3) * rng.choice([-1.0, 1.0], 3)
+    step = float(rng.choice([0.5, 1.0, 1.5]))
+    return euler_to_matrix(angles, "rose", degrees=True), rate.astype(float), step
+
+
+def _judge_step(data: tuple[Array, Array, float]) -> ArrayJudge:
+    start, rate, step = (np.asarray(d, dtype=np.float64) for d in data)
+    omega = np.radians(rate)
+    turn = _exp_skew(step * omega)
+    return ArrayJudge(
+        start @ turn,
+        what="your attitude",
+        rotation=True,
+        mistakes=(
+            Mistake(
+                turn @ start,
+                "this turns about the world's axes (the turn multiplies the attitude on the "
+                "left); a gyroscope measures the rate about the body's own axes",
+            ),
+            Mistake(
+                start @ (np.eye(3) + step * _skew(omega)),
+                "this is the first-order step, which keeps two terms of the series and is not a "
+                "rotation; for a constant rate the whole series has a closed form",
+            ),
+            Mistake(
+                start @ _exp_skew(step * np.asarray(rate, dtype=np.float64)),
+                "the rate was used in °/s as if it were rad/s",
+            ),
+            Mistake(
+                start @ turn.T,
+                "the step turns the body the wrong way: a sign of the rate, or the inverse of "
+                "the turn",
+            ),
+            Mistake(
+                start,
+                "this is the attitude at the start; during the step the body turns",
+            ),
+            Mistake(
+                turn,
+                "this is the turn made during the step alone; the question asks where the body "
+                "ends up, starting from its attitude",
+            ),
+        ),
+    )
+
+
+_GIVEN_STEP = (euler_to_matrix(_START_ANGLES, "rose", degrees=True), np.array(_GYRO), _STEP)
+_ANSWER_STEP = _judge_step(_GIVEN_STEP).reference
 
 
 EXERCISES = [
@@ -258,5 +335,34 @@ EXERCISES = [
             ),
         ),
         forbidden=tuple(f"{value:.4f}" for value in _keep_column(_DRIFTED, 2).ravel()),
+    ),
+    Exercise(
+        id="13.4",
+        level="extend",
+        judge=_judge_step(_GIVEN_STEP),
+        per_student=_some_step,
+        judged=_judge_step,
+        given=lambda: (_GIVEN_STEP[0].copy(), _GIVEN_STEP[1].copy(), _GIVEN_STEP[2]),
+        examples=(
+            Example("W_R_ex @ rotvec_to_matrix(np.radians(B_w_ex) * h_ex)", "correct"),
+            Example("integrate_angular_velocity(W_R_ex, B_w_ex, h_ex, degrees=True)", "correct"),
+            Example(
+                "integrate_angular_velocity(W_R_ex, W_R_ex @ np.radians(B_w_ex), h_ex,"
+                " frame='space')",
+                "correct",
+            ),
+            Example("rotvec_to_matrix(np.radians(B_w_ex) * h_ex) @ W_R_ex", "off", "world's axes"),
+            Example(
+                "W_R_ex @ (np.eye(3) + h_ex * np.cross(np.eye(3), np.radians(B_w_ex)))",
+                "off",
+                "first-order step",
+            ),
+            Example("W_R_ex @ rotvec_to_matrix(B_w_ex * h_ex)", "off", "as if it were rad/s"),
+            Example("W_R_ex @ rotvec_to_matrix(-np.radians(B_w_ex) * h_ex)", "off", "wrong way"),
+            Example("rotvec_to_matrix(np.radians(B_w_ex) * h_ex)", "off", "during the step alone"),
+            Example("W_R_ex", "off", "at the start"),
+            Example("'the attitude'", "off", "text"),
+        ),
+        forbidden=tuple(f"{value:.4f}" for value in np.asarray(_ANSWER_STEP).ravel()),
     ),
 ]
