@@ -130,16 +130,16 @@ def _exp_skew(rotvec: Array) -> Array:
     return turn
 
 
-def _some_step(rng: np.random.Generator) -> tuple[Array, Array, float]:
+def _some_step(rng: np.random.Generator) -> tuple[Array, Array, Array]:
     """A student's start attitude (whole-degree Rose angles), gyroscope rate (every component
     20 to 60 °/s, of either sign) and step (0.5, 1 or 1.5 s): a turn of 17° to 156°."""
     angles = rng.integers([-170, -80, -170], [171, 81, 171]).astype(float)
     rate = rng.integers(20, 61, 3) * rng.choice([-1.0, 1.0], 3)
-    step = float(rng.choice([0.5, 1.0, 1.5]))
+    step = np.array(rng.choice([0.5, 1.0, 1.5]))  # an array, as all given data: a copy is fresh
     return euler_to_matrix(angles, "rose", degrees=True), rate.astype(float), step
 
 
-def _judge_step(data: tuple[Array, Array, float]) -> ArrayJudge:
+def _judge_step(data: tuple[Array, Array, Array]) -> ArrayJudge:
     start, rate, step = (np.asarray(d, dtype=np.float64) for d in data)
     omega = np.radians(rate)
     turn = _exp_skew(step * omega)
@@ -180,7 +180,11 @@ def _judge_step(data: tuple[Array, Array, float]) -> ArrayJudge:
     )
 
 
-_GIVEN_STEP = (euler_to_matrix(_START_ANGLES, "rose", degrees=True), np.array(_GYRO), _STEP)
+_GIVEN_STEP = (
+    euler_to_matrix(_START_ANGLES, "rose", degrees=True),
+    np.array(_GYRO),
+    np.array(_STEP),
+)
 _ANSWER_STEP = _judge_step(_GIVEN_STEP).reference
 
 
@@ -342,7 +346,7 @@ EXERCISES = [
         judge=_judge_step(_GIVEN_STEP),
         per_student=_some_step,
         judged=_judge_step,
-        given=lambda: (_GIVEN_STEP[0].copy(), _GIVEN_STEP[1].copy(), _GIVEN_STEP[2]),
+        given=lambda: tuple(part.copy() for part in _GIVEN_STEP),
         examples=(
             Example("W_R_ex @ rotvec_to_matrix(np.radians(B_w_ex) * h_ex)", "correct"),
             Example("integrate_angular_velocity(W_R_ex, B_w_ex, h_ex, degrees=True)", "correct"),
