@@ -21,6 +21,7 @@ import sympy as sp
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
+from hypothesis_budget import examples
 from mp_reference import EPS, radians_of
 from numpy.testing import assert_allclose, assert_array_equal
 from scipy.spatial.transform import Rotation
@@ -267,7 +268,7 @@ angle = st.one_of(
 )
 triples = hnp.arrays(np.float64, (3,), elements=angle)
 vectors = hnp.arrays(np.float64, (3,), elements=st.floats(-10.0, 10.0, allow_nan=False))
-checked = settings(max_examples=200, deadline=None)
+checked = settings(max_examples=examples(200), deadline=None)
 
 
 @checked

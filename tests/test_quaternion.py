@@ -17,6 +17,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
+from hypothesis_budget import examples
 from numpy.testing import assert_allclose, assert_array_equal
 from scipy.spatial.transform import Rotation
 
@@ -311,7 +312,7 @@ quaternions = hnp.arrays(
 ).filter(lambda q: bool(np.all(np.abs(q).max(axis=-1) > 0)))
 # for products and scalings, which would underflow a quaternion made of tiny components to 0
 sizable = quaternions.filter(lambda q: bool(np.all(np.abs(q).max(axis=-1) > 1e-3)))
-checked = settings(max_examples=150, deadline=None)
+checked = settings(max_examples=examples(150), deadline=None)
 
 
 @checked
