@@ -63,7 +63,7 @@ settings.register_profile(
 )
 
 # The README's test command draws a quarter of each property test's examples (the ``quick``
-# profile, tests/hypothesis_budget.py); CI draws them all again with
+# profile, tests/budget.py); CI draws them all again with
 # ``--hypothesis-profile=thorough``, Hypothesis' usual settings.
 settings.register_profile("thorough")
 settings.register_profile("quick", max_examples=25)

@@ -18,10 +18,10 @@ import mpmath
 import numpy as np
 import pytest
 import sympy as sp
+from budget import examples
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
-from hypothesis_budget import examples
 from mp_reference import EPS, radians_of
 from numpy.testing import assert_allclose, assert_array_equal
 from scipy.spatial.transform import Rotation

@@ -13,10 +13,10 @@ import math
 import mpmath
 import numpy as np
 import pytest
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
-from hypothesis_budget import examples
 from mp_reference import EPS, matrix_of_rotvec, mp_matrix, to_float
 from numpy.testing import assert_allclose, assert_array_equal
 from scipy.spatial.transform import Rotation

@@ -13,9 +13,9 @@ import mpmath
 import numpy as np
 import pytest
 from bad_numbers import bad_values
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from hypothesis_budget import examples
 from numpy.testing import assert_allclose, assert_array_equal
 from scipy.spatial.transform import Rotation
 

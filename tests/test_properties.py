@@ -5,10 +5,10 @@ and from 1e-16 … 1e-1 rad around them, where gimbal lock lives.
 """
 
 import numpy as np
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
-from hypothesis_budget import examples
 from numpy.testing import assert_allclose, assert_array_equal
 from scipy.spatial.transform import Rotation
 

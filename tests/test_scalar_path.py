@@ -15,9 +15,9 @@ import warnings
 
 import numpy as np
 import pytest
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from hypothesis_budget import examples
 from scipy.spatial.transform import Rotation
 
 import eulerlib
