@@ -77,9 +77,9 @@ def _candidates(
     mistakes = (
         Mistake(
             _first(_hamilton(W_q_B, _conjugate(C_qbar_B))),
-            "that reads the paper's quaternion as if it were Hamilton's: in JPL's convention the "
-            "four numbers of ᶜq̄_B are those Hamilton's product gives the other direction, so "
-            "compare the two conventions' matrices C(q̄) and R(q) before you convert it",
+            "that reads the paper's quaternion as if it were Hamilton's ᶜq_B and inverts it; in "
+            "JPL's convention C(q̄) is the transpose of Hamilton's R(q) for the same four "
+            "numbers: ask which frame to which those numbers turn in Hamilton's convention",
         ),
         Mistake(
             _first(_hamilton(_conjugate(W_q_B), C_qbar_B)),
