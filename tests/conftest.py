@@ -62,6 +62,13 @@ settings.register_profile(
     deadline=None,
 )
 
+# The README's test command draws a quarter of each property test's examples (the ``quick``
+# profile, tests/budget.py); CI draws them all again with
+# ``--hypothesis-profile=thorough``, Hypothesis' usual settings.
+settings.register_profile("thorough")
+settings.register_profile("quick", max_examples=25)
+settings.load_profile("quick")
+
 #: Seed of the ``rng`` fixture, for tests that draw the same numbers once for many cases.
 SEED = 20150214
 

@@ -18,6 +18,7 @@ import mpmath
 import numpy as np
 import pytest
 import sympy as sp
+from budget import examples
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
@@ -267,7 +268,7 @@ angle = st.one_of(
 )
 triples = hnp.arrays(np.float64, (3,), elements=angle)
 vectors = hnp.arrays(np.float64, (3,), elements=st.floats(-10.0, 10.0, allow_nan=False))
-checked = settings(max_examples=200, deadline=None)
+checked = settings(max_examples=examples(200), deadline=None)
 
 
 @checked

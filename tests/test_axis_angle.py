@@ -14,6 +14,7 @@ import mp_reference as mp
 import mpmath
 import numpy as np
 import pytest
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
@@ -298,7 +299,7 @@ small_or_any_angle = st.one_of(
     st.floats(1e-300, 1e-4),
     st.builds(lambda d: math.pi - d, st.floats(0.0, 1e-4)),
 )
-checked = settings(max_examples=150, deadline=None)
+checked = settings(max_examples=examples(150), deadline=None)
 
 
 @checked

@@ -8,6 +8,7 @@ from contextlib import contextmanager
 
 import numpy as np
 import pytest
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from numpy.testing import assert_allclose
@@ -54,7 +55,7 @@ def quiet_lock() -> Iterator[None]:
 
 
 @given(angle_triples)
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 def test_aerospace_to_rose_relabelled_flips_yaw_and_pitch(
     angles: tuple[float, float, float],
 ) -> None:
@@ -91,7 +92,7 @@ def test_preset_fields() -> None:
 
 
 @given(angle_triples)
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 def test_rose_is_scipy_intrinsic_zyx(angles: tuple[float, float, float]) -> None:
     yaw, pitch, roll = angles
     expected = scipy_matrix("ZYX", [yaw, pitch, roll])
@@ -103,7 +104,7 @@ def test_rose_is_scipy_intrinsic_zyx(angles: tuple[float, float, float]) -> None
 
 
 @given(angle_triples)
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 def test_ros_is_scipy_extrinsic_xyz(angles: tuple[float, float, float]) -> None:
     roll, pitch, yaw = angles[2], angles[1], angles[0]
     expected = scipy_matrix("xyz", [roll, pitch, yaw])
@@ -132,7 +133,7 @@ def test_ros_matches_the_rpy_matrix_written_out() -> None:
 
 
 @given(angle_triples)
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 def test_baker_is_scipy_intrinsic_yzx(angles: tuple[float, float, float]) -> None:
     expected = scipy_matrix("YZX", angles)
     assert_allclose(angles_to_matrix(angles, "baker", degrees=True), expected, atol=1e-14)
@@ -197,7 +198,7 @@ def test_rose_and_ros_zero_yaw_at_lock(pitch: float) -> None:
 
 
 @given(st.sampled_from(ALL_SEQUENCES), finite_angle, finite_angle, st.booleans())
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 def test_either_outer_angle_can_be_zeroed_at_lock(
     seq: str, first: float, third: float, high: bool
 ) -> None:
@@ -215,7 +216,7 @@ def test_either_outer_angle_can_be_zeroed_at_lock(
 
 
 @given(any_convention, any_convention, angle_triples)
-@settings(max_examples=150, deadline=None)
+@settings(max_examples=examples(150), deadline=None)
 def test_convert_angles_gives_the_same_matrix_as_scipy(
     source: str, target: str, angles: tuple[float, float, float]
 ) -> None:
@@ -230,7 +231,7 @@ def test_convert_angles_gives_the_same_matrix_as_scipy(
 
 
 @given(preset_names, preset_names, angle_triples)
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 def test_round_trip_returns_the_angles(
     source: str, target: str, angles: tuple[float, float, float]
 ) -> None:
@@ -294,7 +295,7 @@ def test_up_axis_matrix_is_a_rotation_that_keeps_the_nose() -> None:
 
 
 @given(angle_triples, angle_triples)
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 def test_change_up_axis_properties(
     a: tuple[float, float, float], b: tuple[float, float, float]
 ) -> None:
@@ -316,7 +317,7 @@ def test_change_up_axis_properties(
 
 
 @given(angle_triples)
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=examples(60), deadline=None)
 def test_baker_relabelled_is_rose_with_pitch_negated(angles: tuple[float, float, float]) -> None:
     heading, attitude, bank = angles
     R_baker = scipy_matrix("YZX", [heading, attitude, bank])

@@ -13,6 +13,7 @@ import math
 import mpmath
 import numpy as np
 import pytest
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
@@ -101,7 +102,7 @@ rotations = st.builds(
 vectors = hnp.arrays(np.float64, (3,), elements=st.floats(-50.0, 50.0, allow_nan=False))
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(rotations, vectors, st.floats(-1.0, 1.0, allow_nan=False))
 def test_body_and_space_frames_agree(R, omega, dt) -> None:
     """``R exp([ω dt]×) = exp([R ω dt]×) R``: the body rate ω is the space rate R ω."""

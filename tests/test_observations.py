@@ -13,6 +13,7 @@ import mpmath
 import numpy as np
 import pytest
 from bad_numbers import bad_values
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from numpy.testing import assert_allclose, assert_array_equal
@@ -120,7 +121,7 @@ def test_against_mpmath_at_every_scale(scale: float, rng) -> None:
     assert worst <= 32.0, worst
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(st.integers(0, 2**32 - 1), st.integers(2, 12))
 def test_noiseless_vectors_give_back_their_rotation(seed: int, count: int) -> None:
     rng = np.random.default_rng(seed)
@@ -136,7 +137,7 @@ def test_noiseless_vectors_give_back_their_rotation(seed: int, count: int) -> No
     assert found.rssd <= 1e-13 * np.sqrt(np.sum(b * b))
 
 
-@settings(max_examples=50, deadline=None)
+@settings(max_examples=examples(50), deadline=None)
 @given(st.integers(0, 2**32 - 1))
 def test_turning_the_observations_turns_the_answer(seed: int) -> None:
     rng = np.random.default_rng(seed)

@@ -733,8 +733,11 @@ def valid_arguments(name: str, ax: Any = None) -> dict[str, Any]:
     The functions that draw into a given axes get ``ax``, or by default a new figure with a 3D
     axes, the most expensive argument here; the others get none.
     """
-    if name in ("draw_frame", "draw_aircraft"):
-        return {"ax": new_3d_axes() if ax is None else ax}
+    if name in ("draw_frame", "draw_aircraft", "draw_axis_path"):
+        given = {"ax": new_3d_axes() if ax is None else ax}
+        if name == "draw_axis_path":
+            given["rotations"] = np.stack([np.eye(3)] * 2)
+        return given
     angles = {"angles": [30.0, 20.0, 10.0], "degrees": True}
     return {
         "new_3d_axes": {},
@@ -746,7 +749,6 @@ def valid_arguments(name: str, ax: Any = None) -> dict[str, Any]:
         "gimbal_ring_points": angles,
         "plot_gimbal": angles,
         "animate_gimbal_lock": {"frames": 2},
-        "draw_axis_path": {"ax": new_3d_axes(), "rotations": np.stack([np.eye(3)] * 2)},
         "plot_axis_paths": {"paths": np.stack([np.eye(3)] * 2)},
     }[name]
 

@@ -5,6 +5,7 @@ and from 1e-16 … 1e-1 rad around them, where gimbal lock lives.
 """
 
 import numpy as np
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
@@ -49,7 +50,7 @@ def rotations(draw, count=None):
     return Rotation.from_quat(quaternions).as_matrix()
 
 
-checked = settings(max_examples=150, deadline=None)
+checked = settings(max_examples=examples(150), deadline=None)
 
 
 @checked

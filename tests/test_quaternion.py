@@ -14,6 +14,7 @@ import warnings
 import mp_reference as mp
 import numpy as np
 import pytest
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
@@ -311,7 +312,7 @@ quaternions = hnp.arrays(
 ).filter(lambda q: bool(np.all(np.abs(q).max(axis=-1) > 0)))
 # for products and scalings, which would underflow a quaternion made of tiny components to 0
 sizable = quaternions.filter(lambda q: bool(np.all(np.abs(q).max(axis=-1) > 1e-3)))
-checked = settings(max_examples=150, deadline=None)
+checked = settings(max_examples=examples(150), deadline=None)
 
 
 @checked

@@ -13,6 +13,7 @@ import mpmath
 import numpy as np
 import pytest
 from bad_numbers import bad_values
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
@@ -272,20 +273,20 @@ QUATERNIONS = hnp.arrays(
 ).filter(lambda q: np.linalg.norm(q) > 1e-3)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(QUATERNIONS, QUATERNIONS)
 def test_p_q_times_q_inverse_is_p(p: np.ndarray, q: np.ndarray) -> None:
     back = quaternion_multiply(quaternion_multiply(p, q), quaternion_inverse(q))
     assert np.abs(back - p).max() <= 32 * EPS * np.linalg.norm(p)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(QUATERNIONS)
 def test_exp_of_log_is_q(q: np.ndarray) -> None:
     assert np.abs(quaternion_exp(quaternion_log(q)) - q).max() <= 16 * EPS * np.linalg.norm(q)
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(QUATERNIONS, st.floats(-3.0, 3.0), st.floats(-3.0, 3.0))
 def test_powers_add_their_exponents(q: np.ndarray, s: float, t: float) -> None:
     unit = q / np.linalg.norm(q)
@@ -294,7 +295,7 @@ def test_powers_add_their_exponents(q: np.ndarray, s: float, t: float) -> None:
     assert np.abs(product - quaternion_power(unit, s + t)).max() <= 64 * EPS
 
 
-@settings(max_examples=200, deadline=None)
+@settings(max_examples=examples(200), deadline=None)
 @given(QUATERNIONS, st.floats(0.0, 1.0), st.floats(-2.0, 2.0))
 def test_a_power_of_a_power(q: np.ndarray, s: float, t: float) -> None:
     unit = q / np.linalg.norm(q)

@@ -14,6 +14,7 @@ import mpmath
 import numpy as np
 import pytest
 from bad_numbers import bad_values
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from numpy.testing import assert_allclose, assert_array_equal
@@ -162,7 +163,7 @@ def test_against_mpmath(spread: float, rng) -> None:
     assert worst <= 16.0, worst
 
 
-@settings(max_examples=50, deadline=None)
+@settings(max_examples=examples(50), deadline=None)
 @given(st.integers(0, 2**32 - 1), st.integers(2, 10))
 def test_the_mean_turns_with_the_rotations(seed: int, count: int) -> None:
     rng = np.random.default_rng(seed)

@@ -15,6 +15,7 @@ import warnings
 
 import numpy as np
 import pytest
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
@@ -67,7 +68,7 @@ triple_degrees = st.tuples(
 )
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(values=triple, seq=st.sampled_from(SEQUENCES))
 def test_euler_to_matrix_and_quaternion(values: tuple[float, float, float], seq: str) -> None:
     one, batch = np.array(values), np.array([values])
@@ -76,7 +77,7 @@ def test_euler_to_matrix_and_quaternion(values: tuple[float, float, float], seq:
     assert_ulp(eulerlib.euler_to_matrix(list(values), seq), eulerlib.euler_to_matrix(batch, seq))
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(values=triple_degrees, seq=st.sampled_from(SEQUENCES), first=st.booleans())
 def test_degrees(values: tuple[float, float, float], seq: str, first: bool) -> None:
     one, batch = np.array(values), np.array([values])
@@ -142,7 +143,7 @@ quaternion_component = st.one_of(
 )
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(q=st.tuples(*[quaternion_component] * 4), seq=st.sampled_from(SEQUENCES))
 def test_quaternions(q: tuple[float, float, float, float], seq: str) -> None:
     one, batch = np.array(q), np.array([q])
@@ -267,7 +268,7 @@ def test_matrices_and_points() -> None:
     assert str(single.value) == str(batch.value).replace(" at index (0,)", "")
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(values=triple, degrees=st.booleans(), axis=st.sampled_from("xyz"))
 def test_named_converted_and_elementary(
     values: tuple[float, float, float], degrees: bool, axis: str
@@ -298,7 +299,7 @@ def test_named_converted_and_elementary(
     )
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=examples(100), deadline=None)
 @given(
     t=st.one_of(st.floats(-3.0, 3.0), st.sampled_from([0.0, 1.0, 0.5, 1e-300, 1e300])),
     dt=st.one_of(st.floats(-10.0, 10.0), st.sampled_from([0.0, 1e-300, 1e300])),

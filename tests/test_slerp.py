@@ -12,6 +12,7 @@ import mp_reference as mp
 import mpmath
 import numpy as np
 import pytest
+from budget import examples
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
@@ -164,7 +165,7 @@ def rotation_pairs(draw):
     return R0, R1
 
 
-checked = settings(max_examples=150, deadline=None)
+checked = settings(max_examples=examples(150), deadline=None)
 
 
 @checked

@@ -174,8 +174,20 @@ def _ring_points(
     return [RING_RADII[r] * (c * first[r] + s * second[r]) for r in range(3)]
 
 
+#: Line styles of the outer, middle and inner ring, so that the rings differ by more than colour.
+RING_STYLES: tuple[Any, ...] = ("-", (0, (4.0, 1.5)), (0, (1.0, 1.2)))
+#: Words for the rings, outer to inner.
+RING_NAMES = ("outer", "middle", "inner")
+_STYLE_WORDS = ("solid", "dashed", "dotted")
+
+
 def _draw_gimbal(ax: Axes3D, values: NDArray[np.float64], convention: Convention) -> None:
-    """Rings, pivots, first and third axes and the body frame, for checked angles (radians)."""
+    """Rings, pivots, first and third axes and the body frame, for checked angles (radians).
+
+    The rings differ in colour, line style (outer solid, middle dashed, inner dotted) and
+    radius; the legend names each ring with its style, its angle and its axis. The tick labels
+    are left out (the rings have radius 1, 0.8 and 0.6; the numbers would only crowd them).
+    """
     from eulerlib.gimbal_lock import gimbal_lock_status
 
     axes, steps = intrinsic_steps(values, convention)
@@ -193,8 +205,10 @@ def _draw_gimbal(ax: Axes3D, values: NDArray[np.float64], convention: Convention
             ring[:, 1],
             ring[:, 2],
             color=RING_COLORS[r],
+            linestyle=RING_STYLES[r],
             linewidth=3.0,
-            label=f"ring {r + 1}: {angle}{np.degrees(steps[r]) + 0.0:.0f}° about {names[r]}",
+            label=f"{RING_NAMES[r]} ({_STYLE_WORDS[r]}): {angle}"
+            f"{np.degrees(steps[r]) + 0.0:.0f}° about {names[r]}",
         )
         handles.append(line)
         # Pivots: ring r turns about axis a_r of the frame before it (fixed for the outer one).
@@ -203,7 +217,8 @@ def _draw_gimbal(ax: Axes3D, values: NDArray[np.float64], convention: Convention
         for sign in (-1.0, 1.0):
             ends = sign * np.stack([RING_RADII[r] * pivot, outer * pivot])
             ax.plot(ends[:, 0], ends[:, 1], ends[:, 2], color="0.25", linewidth=4.0)
-    # The axes of the first and third angle: they coincide at gimbal lock.
+    # The axes of the first and third angle, thin and in the colour of their ring: they
+    # coincide at gimbal lock.
     for r, direction in ((0, np.eye(3)[:, axes[0]]), (2, frames[1][:, axes[2]])):
         ends = np.stack([-1.25 * direction, 1.25 * direction])
         ax.plot(
@@ -211,10 +226,17 @@ def _draw_gimbal(ax: Axes3D, values: NDArray[np.float64], convention: Convention
             ends[:, 1],
             ends[:, 2],
             color=RING_COLORS[r],
-            linestyle=":",
-            linewidth=1.5,
+            linestyle="-.",
+            linewidth=1.2,
         )
-    frame_artists(ax, frames[2], scale=0.45, linewidth=1.5)
+    for artist in frame_artists(ax, frames[2], scale=0.45, linewidth=1.5):
+        if hasattr(artist, "set_fontsize"):
+            artist.set_fontsize(8)
+    ax.set_xticklabels([])
+    ax.set_yticklabels([])
+    ax.set_zticklabels([])
+    for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+        axis.labelpad = -8
     status = gimbal_lock_status(frames[2], convention)
     given = np.degrees(values) + 0.0
     if named:
@@ -232,7 +254,15 @@ def _draw_gimbal(ax: Axes3D, values: NDArray[np.float64], convention: Convention
         f"{heading}\naxes 1 and 3 are {float(between):.0f}° apart: {state}",
         fontsize=9,
     )
-    ax.legend(handles=handles, loc="upper left", fontsize=7, frameon=False)
+    ax.legend(
+        handles=handles,
+        loc="upper left",
+        bbox_to_anchor=(0.0, 0.97),
+        fontsize=7,
+        frameon=False,
+        handlelength=3.2,
+        borderaxespad=0.0,
+    )
 
 
 def plot_gimbal(
@@ -245,11 +275,12 @@ def plot_gimbal(
 ) -> Figure:
     """Draw a three-ring gimbal set to ``angles``, with the body frame inside.
 
-    The rings are the ones of :func:`gimbal_ring_points` (outer purple, middle orange, inner
-    cyan), with their pivots as short dark bars, and the axes of the first and third angle as
-    dotted lines: at gimbal lock those two lines coincide and the outer and middle rings lie in
-    one plane. The title says how far apart the two axes are; the legend, inside the axes,
-    says which angle turns which ring.
+    The rings are the ones of :func:`gimbal_ring_points`, told apart by colour, radius and line
+    style (outer solid, middle dashed, inner dotted), with their pivots as short dark bars, and
+    the axes of the first and third angle as thin dash-dotted lines in the colour of their ring:
+    at gimbal lock those two lines coincide and the outer and middle rings lie in one plane.
+    The title says how far apart the two axes are; the legend, inside the axes, says which
+    angle turns which ring.
 
     Parameters
     ----------
@@ -307,7 +338,7 @@ def animate_gimbal_lock(
     """An animation that turns the middle gimbal ring into lock.
 
     The first and third angles stay at 40° and 25° while the middle angle sweeps from 0° to 90°
-    (Tait–Bryan) or from 90° to 0° (proper Euler). The dotted axes of the first and third
+    (Tait–Bryan) or from 90° to 0° (proper Euler). The dash-dotted axes of the first and third
     angle close in on each other until they coincide in the last frame: from then on turning
     the outer ring or the inner ring does the same thing, and the two angles can no longer be
     told apart.

@@ -106,15 +106,19 @@ EXERCISES = [
         given=lambda: euler_to_matrix(_LOCKED_YPR, "rose", degrees=True),
         examples=(
             Example(
-                "[0.0, -np.degrees(np.arcsin(R_ex[2, 0])),"
-                " np.degrees(np.arctan2(R_ex[0, 1], R_ex[0, 2]))]",
+                "[0.0, -np.degrees(np.arcsin(W_R_B_ex[2, 0])),"
+                " np.degrees(np.arctan2(W_R_B_ex[0, 1], W_R_B_ex[0, 2]))]",
                 "correct",
             ),
             Example("[0, 90, 320]", "correct"),
             Example("[360, 90, -40]", "correct"),
             Example("[20, 90, -20]", "off", "yaw = 0"),
-            Example("[0, 90, np.degrees(np.arctan2(-R_ex[0, 1], -R_ex[0, 2]))]", "off", "eq 4a"),
-            Example("[0, 90, np.degrees(np.arctan2(R_ex[0, 2], R_ex[0, 1]))]", "off", "swapped"),
+            Example(
+                "[0, 90, np.degrees(np.arctan2(-W_R_B_ex[0, 1], -W_R_B_ex[0, 2]))]", "off", "eq 4a"
+            ),
+            Example(
+                "[0, 90, np.degrees(np.arctan2(W_R_B_ex[0, 2], W_R_B_ex[0, 1]))]", "off", "swapped"
+            ),
             Example("[0, -90, -40]", "off", "pitch has the wrong sign"),
             Example("[0, 90, 40]", "off", "roll − yaw with the wrong sign"),
             Example("[-40, 90, 0]", "off", "roll − yaw with the wrong sign"),

@@ -11,25 +11,36 @@ from eulerlib import euler_to_matrix, matrix_to_euler, rot_y
 from .judges import AnglesJudge, ChoiceJudge, Constraint, Mistake, NumberJudge, rounded_to
 from .key import Example, Exercise
 
-_LOCKED = (25.0, 90.0, 70.0)  # yaw, pitch, roll of the aircraft of 07.1, degrees
+# 07.1: the matrix ᵂR_B built from this yaw, pitch, roll (degrees), at pitch −90°, where only
+# yaw + roll is defined (Rose eq 4a); eulerlib reports yaw 0, SciPy roll 0.
+_LOCKED = (25.0, -90.0, 40.0)
 _ZXZ = (30.0, 180.0, 10.0)  # z, x', z'' of the matrix of 07.3, degrees
 # 07.2: the locked attitude of section 4 nudged by 1e-9 rad about the world +y axis
 _NUDGED = rot_y(1e-9) @ euler_to_matrix([0.0, 90.0, -20.0], "ZYX", degrees=True)
 _NUDGED_ROLL = float(matrix_to_euler(_NUDGED, "ZYX", degrees=True)[2])
 
 
-def _some_locked(rng: np.random.Generator) -> Any:
-    """A student's yaw, pitch, roll at pitch +90°: yaw and roll whole degrees, their sum and
-    difference at least 10° from 0° (so that the two mistakes differ from the answer)."""
+def _some_yaw_roll(rng: np.random.Generator) -> tuple[float, float]:
+    """A student's yaw and roll, whole degrees: their sum and difference at least 10° from
+    every multiple of 45° (where two of the typical mistakes would coincide with the answer)."""
     while True:
         yaw, roll = (float(a) for a in rng.integers(-80, 81, 2))
-        if min(abs(roll - yaw), abs(roll + yaw), abs(yaw), abs(2 * yaw)) >= 10:
-            return np.array([yaw, 90.0, roll])
+        if all(10.0 <= abs(x) % 45.0 <= 35.0 for x in (roll + yaw, roll - yaw)) and abs(yaw) >= 10:
+            return yaw, roll
+
+
+def _some_locked(rng: np.random.Generator) -> Any:
+    """A student's matrix ᵂR_B at pitch −90° (yaw + roll other than in the teacher's edition,
+    whose stored outputs show its answer)."""
+    while True:
+        yaw, roll = _some_yaw_roll(rng)
+        if yaw + roll != _LOCKED[0] + _LOCKED[2]:
+            return euler_to_matrix([yaw, -90.0, roll], "rose", degrees=True)
 
 
 def _some_zxz(rng: np.random.Generator) -> Any:
     """A student's z, x', z'' at x' = 180°, picked like :func:`_some_locked`'s yaw and roll."""
-    z, _, z2 = _some_locked(rng)
+    z, z2 = _some_yaw_roll(rng)
     return np.array([z, 180.0, z2])
 
 
@@ -38,29 +49,36 @@ def _is_zero_degrees(angle: float) -> bool:
     return abs((angle + 180.0) % 360.0 - 180.0) <= 1e-9
 
 
-def _judge_locked(ypr: Any) -> AnglesJudge:
+def _judge_locked(W_R_B: Any) -> AnglesJudge:
+    """The judge of 07.1: any yaw, pitch, roll that rebuild the matrix at pitch −90°.
+
+    The reference is the library's reading (yaw 0, the roll carries yaw + roll); every other
+    split of yaw + roll rebuilds the matrix too and is right, SciPy's (roll 0) among them.
+    """
+    yaw, _, roll = matrix_to_euler(np.asarray(W_R_B, dtype=float), "rose", degrees=True, warn=False)
+    total = float(yaw + roll)  # yaw + roll, the one combination the matrix keeps at −90°
     return AnglesJudge(
-        ypr,
+        [0.0, -90.0, total],
         "rose",
         degrees=True,
         what="your yaw, pitch, roll",
-        constraints=(
-            Constraint(
-                lambda a: _is_zero_degrees(float(a[0])),
-                "the question asks for the triple with yaw = 0°",
-            ),
-        ),
+        hint="read the pitch off r31 first; at that pitch, write out which entries hold the "
+        "sine and the cosine of the one combination of yaw and roll that is left",
         mistakes=(
             Mistake(
-                [0.0, 90.0, ypr[2] + ypr[0]],
-                "you added yaw and roll: the sum is what survives at pitch −90°; at pitch +90° "
-                "write out where R_y(90°) lays the roll axis, and which way the two outer turns "
-                "then go about it",
+                [-total, -90.0, 0.0],
+                "yaw + roll has the wrong sign: whichever angle you set to 0 (SciPy sets the "
+                "roll, eulerlib the yaw), the other carries the whole sum at pitch −90°, sign "
+                "included; it is at +90° that roll − yaw survives",
             ),
             Mistake(
-                [0.0, 90.0, ypr[0] - ypr[2]],
-                "you took yaw − roll: the combination is right up to its sign; check the sign "
-                "each outer angle carries in the locked matrix",
+                [total + 180.0, -90.0, 0.0],
+                "that angle comes from eq 4b, atan2(r12, r13), which belongs to pitch +90° "
+                "(r31 = −1); here r31 = +1: use the formula of the other pole",
+            ),
+            Mistake(
+                [90.0 - total, -90.0, 0.0],
+                "the arguments of atan2 are swapped: atan2(y, x) takes the sine entry first",
             ),
         ),
     )
@@ -98,21 +116,34 @@ EXERCISES = [
     Exercise(
         id="07.1",
         level="apply",
-        judge=_judge_locked(_LOCKED),
+        judge=_judge_locked(euler_to_matrix(_LOCKED, "rose", degrees=True)),
         per_student=_some_locked,
         judged=_judge_locked,
-        given=lambda: np.array(_LOCKED),
+        given=lambda: euler_to_matrix(_LOCKED, "rose", degrees=True),
         examples=(
-            Example("[0.0, ypr_ex[1], ypr_ex[2] - ypr_ex[0]]", "correct"),
-            Example("[0, 90, 405]", "correct", "rotation asked for"),
-            Example("[360, 90, 45]", "correct", "rotation asked for"),
-            Example("[25, 90, 70]", "off", "yaw = 0°"),
-            Example("[-45, 90, 0]", "off", "yaw = 0°"),
-            Example("[0, 90, 95]", "off", "you added yaw and roll"),
-            Example("[0, 90, -45]", "off", "yaw − roll"),
-            Example("np.radians([0, 90, 45])", "off", "radians"),
+            Example(
+                "[np.degrees(np.arctan2(-W_R_B_ex[0, 1], -W_R_B_ex[0, 2])), -90, 0]", "correct"
+            ),
+            Example(
+                "[0, -90, np.degrees(np.arctan2(-W_R_B_ex[0, 1], -W_R_B_ex[0, 2]))]", "correct"
+            ),
+            Example("[25, -90, 40]", "correct", "rotation asked for"),
+            Example("[-335, 270, 400]", "correct", "rotation asked for"),
+            Example("[-65, -90, 0]", "off", "sign included"),
+            Example("[0, -90, -65]", "off", "sign included"),
+            Example(
+                "[np.degrees(np.arctan2(W_R_B_ex[0, 1], W_R_B_ex[0, 2])), -90, 0]", "off", "eq 4b"
+            ),
+            Example(
+                "[np.degrees(np.arctan2(-W_R_B_ex[0, 2], -W_R_B_ex[0, 1])), -90, 0]",
+                "off",
+                "swapped",
+            ),
+            Example("[65, 90, 0]", "off", "pitch has the wrong sign"),
+            Example("np.radians([65, -90, 0])", "off", "radians"),
+            Example("[10, -90, 10]", "off", "combination of yaw and roll"),
         ),
-        forbidden=("90, 45", "90.0, 45.0"),
+        forbidden=("65",),
     ),
     Exercise(
         id="07.2",

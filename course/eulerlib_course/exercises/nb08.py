@@ -12,7 +12,8 @@ from .judges import AnglesJudge, ArrayJudge, ChoiceJudge, Mistake, rounded_to
 from .key import Example, Exercise
 
 _HAB = (120.0, -30.0, 45.0)  # Baker's heading, attitude, bank of 08.1, degrees
-_NED = (30.0, 10.0, 5.0)  # aerospace yaw, pitch, roll of 08.3 (NED body in the NED world)
+# aerospace yaw, pitch, roll of 08.3: ᴺR_F, an FRD body F in the NED world N
+_NED = (30.0, 10.0, 5.0)
 
 # 08.1: Baker's matrix built from its elementary rotations (R = Ry Rz Rx), read as Rose's angles.
 _BAKER_MATRIX = (
@@ -48,7 +49,8 @@ def _some_hab(rng: np.random.Generator) -> Any:
 
 
 def _some_ned(rng: np.random.Generator) -> Any:
-    """A student's NED yaw, pitch, roll: a modest attitude, as an aircraft flies."""
+    """A student's aerospace yaw, pitch, roll (FRD body in the NED world): a modest attitude, as
+    an aircraft flies."""
     return np.array(
         [_whole_degrees(rng, -170, 170), _whole_degrees(rng, -40, 40), _whole_degrees(rng, -40, 40)]
     )
@@ -101,8 +103,8 @@ def _judge_ned(ned: Any) -> AnglesJudge:
         mistakes=(
             Mistake(
                 ned[::-1],
-                "you put the NED angles in ROS order but kept the frames: ENU and a body with "
-                "z up are other axes; relabel the world (NED → ENU) and the body "
+                "you put the aerospace angles in ROS order but kept the frames: ENU and a body "
+                "with z up are other axes; relabel the world (NED → ENU) and the body "
                 "(z down → z up)",
             ),
             Mistake(

@@ -34,13 +34,14 @@ def _multiply(A: NDArray[np.float64], B: NDArray[np.float64]) -> NDArray[np.floa
     )
 
 
-def _noisy_north_pole() -> NDArray[np.float64]:
-    """09.3: Baker's R = Ry(h) Rz(90°) Rx(b), the 90° made of two steps with exact decimals."""
+def _noisy_north_pole(heading: float = _HEADING, bank: float = _BANK) -> NDArray[np.float64]:
+    """09.3: Baker's R = Ry(h) Rz(90°) Rx(b), the 90° made of two steps with exact decimals
+    (heading and bank in degrees)."""
     first = np.array([[0.8432, -0.5376, 0.0], [0.5376, 0.8432, 0.0], [0.0, 0.0, 1.0]])
     second = np.array([[0.5376, -0.8432, 0.0], [0.8432, 0.5376, 0.0], [0.0, 0.0, 1.0]])
     attitude_90 = _multiply(first, second)  # about 32.52° + 57.48° about z
-    heading = rot_y(_HEADING, degrees=True)
-    return _multiply(_multiply(heading, attitude_90), rot_x(_BANK, degrees=True))
+    turn = rot_y(heading, degrees=True)
+    return _multiply(_multiply(turn, attitude_90), rot_x(bank, degrees=True))
 
 
 def _general_formulas(m: NDArray[np.float64]) -> list[float]:
@@ -87,6 +88,38 @@ def _judge_pitch(pitch: float) -> NumberJudge:
                 math.pi / 2 - pitch,
                 "that is the distance from 90°; the question asks for the pitch itself",
             ),
+        ),
+    )
+
+
+def _some_north_pole(rng: np.random.Generator) -> NDArray[np.float64]:
+    """A student's noisy north-pole matrix like 09.3's: heading and bank whole degrees, their sum
+    at least 10° from 0°, ±90° and 180° and other than in the teacher's edition."""
+    while True:
+        heading, bank = float(rng.integers(-170, 171)), float(rng.integers(-80, 81))
+        total = 180.0 - (180.0 - (heading + bank)) % 360.0  # in (−180°, 180°]
+        far = min(abs(total), abs(abs(total) - 90.0), 180.0 - abs(total)) >= 10.0
+        if far and total != _HEADING + _BANK:
+            return _noisy_north_pole(heading, bank)
+
+
+def _judge_north_pole(N: NDArray[np.float64]) -> AnglesJudge:
+    """The judge of 09.3: at the north pole m02 = sin(h + b) and m22 = cos(h + b)."""
+    total = math.degrees(math.atan2(float(N[0, 2]), float(N[2, 2])))
+    return AnglesJudge(
+        [total, 90.0, 0.0],
+        "baker",
+        degrees=True,
+        what="your heading, attitude, bank",
+        constraints=(
+            Constraint(
+                lambda a: abs((float(a[2]) + 180.0) % 360.0 - 180.0) <= 1e-9,
+                "the question asks for Baker's choice at the poles, bank = 0°",
+            ),
+        ),
+        mistakes=(
+            Mistake(_general_formulas(N), _NOISE),
+            Mistake([0.0, 90.0, 0.0], _NOISE),
         ),
     )
 
@@ -161,22 +194,9 @@ EXERCISES = [
     Exercise(
         id="09.3",
         level="extend",
-        judge=AnglesJudge(
-            [_HEADING + _BANK, 90.0, 0.0],
-            "baker",
-            degrees=True,
-            what="your heading, attitude, bank",
-            constraints=(
-                Constraint(
-                    lambda a: abs((float(a[2]) + 180.0) % 360.0 - 180.0) <= 1e-9,
-                    "the question asks for Baker's choice at the poles, bank = 0°",
-                ),
-            ),
-            mistakes=(
-                Mistake(_general_formulas(_noisy_north_pole()), _NOISE),
-                Mistake([0.0, 90.0, 0.0], _NOISE),
-            ),
-        ),
+        judge=_judge_north_pole(_noisy_north_pole()),
+        per_student=_some_north_pole,
+        judged=_judge_north_pole,
         given=_noisy_north_pole,
         examples=(
             Example("[np.degrees(np.arctan2(N_ex[0, 2], N_ex[2, 2])), 90.0, 0.0]", "correct"),

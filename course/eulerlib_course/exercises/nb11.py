@@ -3,8 +3,10 @@
 11.1 builds the quaternion of a turn from its axis and angle (half the angle, a unit axis, the
 scalar last); 11.2 predicts the quaternion of two quarter turns by multiplying by hand, in the
 order of the turns; 11.3 reads, from the components of a quaternion at gimbal lock, the one
-combination of Euler angles that is defined there, roll − yaw. ``−q`` is right wherever ``q`` is
-(the double cover).
+combination of Euler angles that is defined there, roll − yaw; 11.4 composes a body's attitude
+``ᵂq_B`` with a camera's orientation that a paper gives in the JPL convention, ``ᶜq̄_B``, into
+``ᵂq_C``, scalar first. ``−q`` is right wherever ``q`` is (the double cover). The references of
+11.4 are computed here with Hamilton's product typed in, not with the library's.
 """
 
 from __future__ import annotations
@@ -12,6 +14,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numpy.typing import NDArray
 
 from eulerlib import euler_to_quaternion
 
@@ -41,6 +44,92 @@ _LOCKED = [37.0, 90.0, -71.0]  # yaw, pitch, roll of the quaternion the learner 
 _Q_LOCK = euler_to_quaternion(_LOCKED, "rose", degrees=True)
 # roll − yaw = 2 atan2(x, w); read scalar first, "w" is x and "x" is y
 _ROLL_MINUS_YAW_SCALAR_FIRST = math.degrees(2 * math.atan2(_Q_LOCK[1], _Q_LOCK[0]))
+
+# --- 11.4: a camera's orientation in JPL's convention, composed with the body's attitude ---------
+
+
+def _hamilton(p: NDArray[np.float64], q: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Hamilton's product of two scalar-last quaternions, (p_w q_v + q_w p_v + p_v × q_v, …)."""
+    pv, pw, qv, qw = p[:3], p[3], q[:3], q[3]
+    return np.append(pw * qv + qw * pv + np.cross(pv, qv), pw * qw - pv @ qv)
+
+
+def _conjugate(q: NDArray[np.float64]) -> NDArray[np.float64]:
+    return np.append(-q[:3], q[3])
+
+
+def _first(q: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Scalar last to scalar first."""
+    return np.roll(q, 1)
+
+
+_W_Q_B = euler_to_quaternion([40.0, -25.0, 70.0], "rose", degrees=True)  # Hamilton, scalar last
+# JPL's ᶜq̄_B has the four numbers of Hamilton's ᴮq_C (its matrix C(q̄) is ᶜR_B = ᴮR_Cᵀ)
+_C_QBAR_B = euler_to_quaternion([-20.0, 35.0, 60.0], "rose", degrees=True)
+
+
+def _candidates(
+    data: tuple[NDArray[np.float64], NDArray[np.float64]],
+) -> tuple[NDArray[np.float64], tuple[Mistake, ...]]:
+    """The reference ᵂq_C = ᵂq_B ᴮq_C, scalar first, and the typical mistakes, scalar first."""
+    W_q_B, C_qbar_B = (np.asarray(q, dtype=np.float64) for q in data)
+    reference = _first(_hamilton(W_q_B, C_qbar_B))
+    mistakes = (
+        Mistake(
+            _first(_hamilton(W_q_B, _conjugate(C_qbar_B))),
+            "that reads the paper's quaternion as if it were Hamilton's ᶜq_B and inverts it; in "
+            "JPL's convention C(q̄) is the transpose of Hamilton's R(q) for the same four "
+            "numbers: ask which frame to which those numbers turn in Hamilton's convention",
+        ),
+        Mistake(
+            _first(_hamilton(_conjugate(W_q_B), C_qbar_B)),
+            "that uses the conjugate of W_q_B, which turns W-coordinates into B-coordinates: "
+            "ᵂq_B already turns B-coordinates into W, as the answer needs",
+        ),
+        Mistake(
+            _first(_hamilton(C_qbar_B, W_q_B)),
+            "the two quaternions are multiplied in the wrong order: with Hamilton's product "
+            "the inner frames must stand side by side and cancel, as for matrices",
+        ),
+        Mistake(
+            _first(_hamilton(W_q_B, np.roll(C_qbar_B, -1))),
+            "that reads the paper's quaternion scalar first; JPL's papers write it "
+            "[q1 q2 q3 q4] with the scalar q4 last, as eulerlib stores it",
+        ),
+    )
+    return reference, mistakes
+
+
+def _apart(q: NDArray[np.float64], r: NDArray[np.float64]) -> float:
+    return float(min(np.abs(q - r).max(), np.abs(q + r).max()))
+
+
+def _distinct(data: tuple[NDArray[np.float64], NDArray[np.float64]]) -> bool:
+    """Every mistake, the reference, its other layout and its conjugate at least 0.05 apart."""
+    reference, mistakes = _candidates(data)
+    values = [reference, np.roll(reference, -1), _first(_conjugate(np.roll(reference, -1)))]
+    values += [np.asarray(m.value, dtype=np.float64) for m in mistakes]
+    return all(_apart(a, b) > 0.05 for i, a in enumerate(values) for b in values[i + 1 :])
+
+
+def _some_camera(rng: np.random.Generator) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """A student's ᵂq_B and ᶜq̄_B: attitudes of whole-degree Rose angles whose mistakes differ."""
+    low, high = [-170, -80, -170], [171, 81, 171]
+    while True:
+        body, camera = (
+            euler_to_quaternion(rng.integers(low, high).astype(float), "rose", degrees=True)
+            for _ in range(2)
+        )
+        if _distinct((body, camera)):
+            return body, camera
+
+
+def _judge_camera(data: tuple[NDArray[np.float64], NDArray[np.float64]]) -> QuaternionJudge:
+    reference, mistakes = _candidates(data)
+    return QuaternionJudge(reference, scalar_first=True, what="your quaternion", mistakes=mistakes)
+
+
+assert _distinct((_W_Q_B, _C_QBAR_B))
 
 
 EXERCISES = [
@@ -187,5 +276,60 @@ EXERCISES = [
             Example("-34", "off", "roll + yaw"),
         ),
         forbidden=("37, 90", "-71", "-108", "252"),
+    ),
+    Exercise(
+        id="11.4",
+        level="extend",
+        judge=_judge_camera((_W_Q_B, _C_QBAR_B)),
+        per_student=_some_camera,
+        judged=_judge_camera,
+        given=lambda: (_W_Q_B.copy(), _C_QBAR_B.copy()),
+        examples=(
+            Example("np.roll(eulerlib.quaternion_multiply(W_q_B, C_qbar_B), 1)", "correct"),
+            Example(
+                "(Rotation.from_quat(W_q_B) * Rotation.from_quat(C_qbar_B)).as_quat("
+                "scalar_first=True)",
+                "correct",
+            ),
+            Example(
+                "eulerlib.matrix_to_quaternion(eulerlib.quaternion_to_matrix(W_q_B)"
+                " @ eulerlib.quaternion_to_matrix(C_qbar_B), scalar_first=True)",
+                "correct",
+            ),
+            Example(
+                "-np.roll(eulerlib.quaternion_multiply(W_q_B, C_qbar_B), 1)",
+                "correct",
+                "same rotation",
+            ),
+            Example(
+                "np.roll(eulerlib.quaternion_multiply(W_q_B,"
+                " eulerlib.quaternion_conjugate(C_qbar_B)), 1)",
+                "off",
+                "as if it were Hamilton's",
+            ),
+            Example(
+                "np.roll(eulerlib.quaternion_multiply("
+                "eulerlib.quaternion_conjugate(W_q_B), C_qbar_B), 1)",
+                "off",
+                "conjugate of W_q_B",
+            ),
+            Example(
+                "np.roll(eulerlib.quaternion_multiply(C_qbar_B, W_q_B), 1)", "off", "wrong order"
+            ),
+            Example(
+                "np.roll(eulerlib.quaternion_multiply(W_q_B, np.roll(C_qbar_B, -1)), 1)",
+                "off",
+                "scalar first",
+            ),
+            Example(
+                "eulerlib.quaternion_multiply(W_q_B, C_qbar_B)", "off", "scalar-first (w, x, y, z)"
+            ),
+            Example(
+                "np.roll(eulerlib.quaternion_conjugate("
+                "eulerlib.quaternion_multiply(W_q_B, C_qbar_B)), 1)",
+                "off",
+                "inverse rotation",
+            ),
+        ),
     ),
 ]

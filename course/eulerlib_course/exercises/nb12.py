@@ -2,22 +2,31 @@
 
 12.1 finds the attitude 30 % of the way along the geodesic; 12.2 predicts the angle between two
 samples of slerp from the constant angular speed alone; 12.3 interpolates two quaternions whose
-dot product is negative, where the short way needs ``−q1`` (the double cover). The references are
-computed here with Shoemake's quaternion formula, not with :func:`eulerlib.slerp`.
+dot product is negative, where the short way needs ``−q1`` (the double cover); 12.4 builds
+squad's control attitude at a key from its two neighbours. The references are computed here with
+Shoemake's quaternion formulas (slerp's arc; squad's ``s = q exp(−(log(q⁻¹ q₊) + log(q⁻¹ q₋)) / 4)``
+with the quaternion exp and log), not with :func:`eulerlib.slerp` or the rotation vectors the
+notebook uses.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from eulerlib import (
     axis_angle_to_matrix,
     euler_to_matrix,
     euler_to_quaternion,
     matrix_to_axis_angle,
+    matrix_to_quaternion,
+    quaternion_conjugate,
+    quaternion_exp,
+    quaternion_log,
+    quaternion_multiply,
     quaternion_to_matrix,
 )
 
@@ -89,6 +98,100 @@ def _judge_halfway(pair: tuple[NDArray[np.float64], NDArray[np.float64]]) -> Qua
         ),
     )
 
+
+# --- 12.4: squad's control attitude at a key -----------------------------------------------------
+
+_KEYS = (  # yaw, pitch, roll (Rose's ZYX, degrees) of the keys k − 1, k, k + 1
+    [15.0, -5.0, 25.0],
+    [65.0, 30.0, -15.0],
+    [145.0, 5.0, 35.0],
+)
+_KeyTriple = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]
+
+
+def _key_matrices(angles: Sequence[ArrayLike]) -> _KeyTriple:
+    previous, key, following = (euler_to_matrix(a, "rose", degrees=True) for a in angles)
+    return previous, key, following
+
+
+def _half_logs(keys: _KeyTriple) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """The vector parts of log(q⁻¹ q₊) and log(q⁻¹ q₋), each neighbour on the key's side."""
+    previous, key, following = (matrix_to_quaternion(m) for m in keys)
+    inverse = quaternion_conjugate(key)
+    logs = []
+    for neighbour in (following, previous):
+        if neighbour @ key < 0:  # the same rotation, on the near side: the short turn
+            neighbour = -neighbour
+        logs.append(quaternion_log(quaternion_multiply(inverse, neighbour))[:3])
+    return logs[0], logs[1]
+
+
+def _control(
+    keys: _KeyTriple, sign: float, share: float, *, left: bool = False, only_next: bool = False
+) -> NDArray[np.float64]:
+    """``q exp(sign · share · (log(q⁻¹ q₊) + log(q⁻¹ q₋)))`` as a matrix (Shoemake: −, 1/4);
+    ``left`` puts the turn before ``q``, ``only_next`` drops the previous key's log."""
+    to_next, to_previous = _half_logs(keys)
+    total = to_next if only_next else to_next + to_previous
+    turn = quaternion_exp(sign * share * total)
+    key = matrix_to_quaternion(keys[1])
+    product = quaternion_multiply(turn, key) if left else quaternion_multiply(key, turn)
+    return quaternion_to_matrix(product)
+
+
+def _some_keys(rng: np.random.Generator) -> _KeyTriple:
+    """A student's three keys: whole-degree Rose angles, 40° to 120° from key to key, with the
+    control attitude at least 10° from the middle key, so that every mistake is told apart."""
+    while True:
+        middle = rng.integers([-170, -60, -170], [171, 61, 171]).astype(float)
+        neighbours = [middle + rng.integers(-50, 51, size=3) for _ in range(2)]
+        neighbours[0][1] = np.clip(neighbours[0][1], -80, 80)
+        neighbours[1][1] = np.clip(neighbours[1][1], -80, 80)
+        keys = _key_matrices([neighbours[0], middle, neighbours[1]])
+        apart = [_angle(keys[0], keys[1]), _angle(keys[1], keys[2])]
+        if not all(40.0 <= a <= 120.0 for a in apart):
+            continue
+        if _angle(_control(keys, -1.0, 0.25), keys[1]) >= 10.0:
+            return keys
+
+
+def _angle(first: NDArray[np.float64], second: NDArray[np.float64]) -> float:
+    cosine = (np.trace(first.T @ second) - 1.0) / 2.0
+    return math.degrees(math.acos(max(-1.0, min(1.0, float(cosine)))))
+
+
+def _judge_control(keys: _KeyTriple) -> ArrayJudge:
+    return ArrayJudge(
+        _control(keys, -1.0, 0.25),
+        what="your matrix",
+        rotation=True,
+        mistakes=(
+            Mistake(
+                _control(keys, 1.0, 0.25),
+                "that control attitude leans toward the two neighbours; squad's leans away from "
+                "them, by minus a quarter of the sum of the two logarithms",
+            ),
+            Mistake(
+                _control(keys, -1.0, 0.5),
+                "that turns by half the sum of the two logarithms; Shoemake's control attitude "
+                "turns by a quarter of it",
+            ),
+            Mistake(
+                _control(keys, -1.0, 0.25, left=True),
+                "the logarithms of R_kᵀ R_k±1 are turns in the key's own body axes, so their "
+                "exponential multiplies R_k on the right, not on the left",
+            ),
+            Mistake(
+                _control(keys, -1.0, 0.25, only_next=True),
+                "that uses only the turn to the next key; the control attitude takes the turns "
+                "to both neighbours, the previous key's too",
+            ),
+        ),
+    )
+
+
+_LOG_NEXT = "eulerlib.matrix_to_rotvec(R_key_ex.T @ R_next_ex)"
+_LOG_PREVIOUS = "eulerlib.matrix_to_rotvec(R_key_ex.T @ R_prev_ex)"
 
 EXERCISES = [
     Exercise(
@@ -206,5 +309,56 @@ EXERCISES = [
             Example("(q0_ex - q1_ex) / 2", "off", "length"),
             Example("np.roll((q0_ex - q1_ex) / np.linalg.norm(q0_ex - q1_ex), 1)", "off", "order"),
         ),
+    ),
+    Exercise(
+        id="12.4",
+        level="extend",
+        judge=_judge_control(_key_matrices(_KEYS)),
+        per_student=_some_keys,
+        judged=_judge_control,
+        given=lambda: _key_matrices(_KEYS),
+        examples=(
+            Example(
+                f"R_key_ex @ eulerlib.rotvec_to_matrix(-({_LOG_NEXT} + {_LOG_PREVIOUS}) / 4)",
+                "correct",
+            ),
+            Example(
+                "R_key_ex @ expm(-(logm(R_key_ex.T @ R_next_ex) + logm(R_key_ex.T @ R_prev_ex))"
+                ".real / 4)",
+                "correct",
+            ),
+            Example(
+                "R_key_ex @ eulerlib.rotvec_to_matrix(-("
+                + _LOG_NEXT
+                + " - eulerlib.matrix_to_rotvec(R_prev_ex.T @ R_key_ex)) / 4)",
+                "correct",
+            ),
+            Example(
+                f"R_key_ex @ eulerlib.rotvec_to_matrix(({_LOG_NEXT} + {_LOG_PREVIOUS}) / 4)",
+                "off",
+                "leans toward",
+            ),
+            Example(
+                f"R_key_ex @ eulerlib.rotvec_to_matrix(-({_LOG_NEXT} + {_LOG_PREVIOUS}) / 2)",
+                "off",
+                "a quarter",
+            ),
+            Example(
+                f"eulerlib.rotvec_to_matrix(-({_LOG_NEXT} + {_LOG_PREVIOUS}) / 4) @ R_key_ex",
+                "off",
+                "on the right",
+            ),
+            Example(
+                f"R_key_ex @ eulerlib.rotvec_to_matrix(-{_LOG_NEXT} / 4)",
+                "off",
+                "both neighbours",
+            ),
+            Example(
+                f"(R_key_ex @ eulerlib.rotvec_to_matrix(-({_LOG_NEXT} + {_LOG_PREVIOUS}) / 4)).T",
+                "off",
+                "transpose",
+            ),
+        ),
+        forbidden=("65.0, 30.0", "145.0", "-15.0]"),
     ),
 ]
