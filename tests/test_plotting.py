@@ -147,11 +147,12 @@ def test_draw_frame_arrows_follow_the_matrix_columns(seed: int) -> None:
         assert offset @ R[:, i] > 0.7
 
 
-def test_draw_frame_default_is_the_reference_frame_in_red_green_blue() -> None:
+def test_draw_frame_default_is_the_reference_frame_in_okabe_ito_colours() -> None:
     ax = new_3d_axes()
     artists = draw_frame(ax, linestyle="--", alpha=0.5)
     colors = [artists[3 * i].get_color() for i in range(3)]
-    assert colors == ["tab:red", "tab:green", "tab:blue"]
+    # Okabe and Ito's vermillion, bluish green and blue, typed in from their palette
+    assert [c.upper() for c in colors] == ["#D55E00", "#009E73", "#0072B2"]
     for i in range(3):
         shaft = artists[3 * i]
         np.testing.assert_array_equal(shaft_vector(shaft)[1], E[:, i])
