@@ -7,6 +7,7 @@ Rose (2015) at work.
 
 from __future__ import annotations
 
+import itertools
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -79,7 +80,7 @@ def aircraft_segments(*, up: str = "z") -> NDArray[np.float64]:
 
 def _polyline(*points: tuple[float, float, float]) -> list[tuple[Any, Any]]:
     """The segments of a line through ``points``, in order."""
-    return list(zip(points[:-1], points[1:], strict=True))
+    return list(itertools.pairwise(points))
 
 
 def _ring(forward: float, half_width: float, height: float) -> list[tuple[Any, Any]]:
@@ -87,8 +88,7 @@ def _ring(forward: float, half_width: float, height: float) -> list[tuple[Any, A
     angles = np.radians([-90.0, -45.0, 0.0, 45.0, 90.0])
     middle = height / 2.0
     points = [
-        (forward, float(half_width * np.cos(a)), float(middle + middle * np.sin(a)))
-        for a in angles
+        (forward, float(half_width * np.cos(a)), float(middle + middle * np.sin(a))) for a in angles
     ]
     return _polyline(*points)
 
