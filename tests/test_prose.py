@@ -179,6 +179,19 @@ def test_links_to_the_frame_notation_land_on_its_heading(path: Path) -> None:
     assert not missing, f"{path.name} links to sections 01 does not mark: {missing}"
 
 
+@pytest.mark.parametrize("path", NOTEBOOKS[1:], ids=IDS[1:])
+def test_the_first_use_of_the_frame_notation_links_back_to_01(path: Path) -> None:
+    """A notebook after 01 that names frames (``${}^{W}R_{B}$``) links, where it first does, to
+    01's section on the notation."""
+    cells = [cell.source for cell in read(path).cells if cell.cell_type == "markdown"]
+    using = [source for source in cells if "{}^{" in source]
+    if not using:
+        pytest.skip(f"{path.name} does not use the frame notation")
+    assert "01_rotations_in_the_plane_and_about_one_axis.ipynb#naming-frames-ar-b" in using[0], (
+        f"{path.name}: the first cell that names frames does not link to 01's section"
+    )
+
+
 def test_glossary_gives_the_range_of_atan2_as_numpy_computes_it() -> None:
     (cell,) = [cell for cell in read(GLOSSARY).cells if cell.source.startswith("### atan2")]
     assert "$[-180°, 180°]$" in cell.source
