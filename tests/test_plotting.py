@@ -147,11 +147,12 @@ def test_draw_frame_arrows_follow_the_matrix_columns(seed: int) -> None:
         assert offset @ R[:, i] > 0.7
 
 
-def test_draw_frame_default_is_the_reference_frame_in_red_green_blue() -> None:
+def test_draw_frame_default_is_the_reference_frame_in_okabe_ito_colours() -> None:
     ax = new_3d_axes()
     artists = draw_frame(ax, linestyle="--", alpha=0.5)
     colors = [artists[3 * i].get_color() for i in range(3)]
-    assert colors == ["tab:red", "tab:green", "tab:blue"]
+    # Okabe and Ito's vermillion, bluish green and blue, typed in from their palette
+    assert [c.upper() for c in colors] == ["#D55E00", "#009E73", "#0072B2"]
     for i in range(3):
         shaft = artists[3 * i]
         np.testing.assert_array_equal(shaft_vector(shaft)[1], E[:, i])
@@ -931,3 +932,56 @@ def test_every_3d_axes_is_labelled_x_y_z() -> None:
     for fig in figures:
         for ax in fig.axes:
             assert (ax.get_xlabel(), ax.get_ylabel(), ax.get_zlabel()) == ("x", "y", "z")
+
+
+# --------------------------------------------------------------------------- palette
+
+#: Machado, Oliveira and Fernandes (2009), "A physiologically-based model for simulation of color
+#: vision deficiency", their matrices for severity 1.0, acting on linear RGB; typed in.
+_DICHROMACY = {
+    "protanopia": [
+        [0.152286, 1.052583, -0.204868],
+        [0.114503, 0.786281, 0.099216],
+        [-0.003882, -0.048116, 1.051998],
+    ],
+    "deuteranopia": [
+        [0.367322, 0.860646, -0.227968],
+        [0.280085, 0.672501, 0.047413],
+        [-0.011820, 0.042940, 0.968881],
+    ],
+    "tritanopia": [
+        [1.255528, -0.076749, -0.178779],
+        [-0.078411, 0.930809, 0.147602],
+        [0.004733, 0.691367, 0.303900],
+    ],
+}
+
+
+def _cielab(color: Any, vision: Any) -> np.ndarray:
+    """A matplotlib colour as a reader with ``vision`` (a 3×3 matrix) sees it, in CIELAB (D65)."""
+    from matplotlib.colors import to_rgb
+
+    srgb = np.asarray(to_rgb(color))
+    linear = np.where(srgb <= 0.04045, srgb / 12.92, ((srgb + 0.055) / 1.055) ** 2.4)
+    seen = np.clip(np.asarray(vision) @ linear, 0.0, 1.0)
+    xyz = np.array([[0.4124, 0.3576, 0.1805], [0.2126, 0.7152, 0.0722], [0.0193, 0.1192, 0.9505]])
+    t = (xyz @ seen) / np.array([0.95047, 1.0, 1.08883])
+    f = np.where(t > (6 / 29) ** 3, np.cbrt(t), t / (3 * (6 / 29) ** 2) + 4 / 29)
+    return np.array([116 * f[1] - 16, 500 * (f[0] - f[1]), 200 * (f[1] - f[2])])
+
+
+@pytest.mark.parametrize("vision", sorted(_DICHROMACY))
+def test_the_palette_is_told_apart_with_every_kind_of_dichromacy(vision: str) -> None:
+    """Axes, rings and the highlighted axis stay apart as a protanope, deuteranope or tritanope
+    sees them: every two at least 15 CIELAB units apart (the red and green of matplotlib's
+    default cycle come within 8 for a deuteranope)."""
+    import itertools
+
+    from eulerlib.plotting import AXIS_COLORS, HIGHLIGHT_COLOR, RING_COLORS
+
+    colours = [*AXIS_COLORS, *RING_COLORS, HIGHLIGHT_COLOR]
+    seen = [_cielab(c, _DICHROMACY[vision]) for c in colours]
+    closest = min(float(np.linalg.norm(a - b)) for a, b in itertools.combinations(seen, 2))
+    assert closest >= 15.0, (vision, closest)
+    red, green = (_cielab(c, _DICHROMACY["deuteranopia"]) for c in ("tab:red", "tab:green"))
+    assert float(np.linalg.norm(red - green)) < 15.0  # the test can fail

@@ -133,6 +133,70 @@ def test_glossary_anchors_are_the_same_in_jupyterlab_and_on_the_website() -> Non
         assert jupyterlab == anchor or _EXPLICIT_ANCHOR.search(heading), heading
 
 
+def heading_anchors(path: Path) -> set[str]:
+    """The anchors a notebook's headings offer on the website and in JupyterLab alike: an
+    explicit ``<span id="...">`` in a heading, or a heading of words only, whose website anchor
+    (lower case, spaces as hyphens) JupyterLab's (the text as it is) equals."""
+    anchors = set()
+    for cell in read(path).cells:
+        if cell.cell_type != "markdown":
+            continue
+        for heading in re.findall(r"^#{1,6} (.+)$", cell.source, re.MULTILINE):
+            explicit = _EXPLICIT_ANCHOR.search(heading)
+            if explicit:
+                anchors.add(explicit.group(1))
+            elif re.fullmatch(r"[a-z0-9]+(?: [a-z0-9]+)*", heading.strip()):
+                anchors.add(heading.strip().replace(" ", "-"))
+    return anchors
+
+
+def test_the_section_on_naming_frames_has_its_anchor() -> None:
+    """01 introduces the frame notation in a heading that carries the anchor later notebooks link
+    to, ``#naming-frames-ar-b``, the same on the website and in JupyterLab: JupyterLab finds the
+    explicit anchor, the website (MyST) makes it from the heading's words, leaving out HTML tags
+    and mathematics, in lower case, spaces as hyphens, punctuation dropped."""
+    notebook = REPO / "notebooks" / "01_rotations_in_the_plane_and_about_one_axis.ipynb"
+    headings = [
+        heading
+        for cell in read(notebook).cells
+        if cell.cell_type == "markdown"
+        for heading in re.findall(r"^#{2,3} (.+)$", cell.source, re.MULTILINE)
+        if '<span id="naming-frames-ar-b"></span>' in heading
+    ]
+    assert len(headings) == 1 and "Naming frames" in headings[0], headings
+    words = re.sub(r"<[^>]*>", "", re.sub(r"\$[^$]*\$", "", headings[0]))
+    website = re.sub(r"[^\w\- ]", "", words.lower().replace(" ", "-"))
+    assert website == "naming-frames-ar-b", website
+    assert "naming-frames-ar-b" in heading_anchors(notebook)
+
+
+@pytest.mark.parametrize("path", [*NOTEBOOKS, GLOSSARY], ids=[*IDS, GLOSSARY.name])
+def test_links_to_the_frame_notation_land_on_its_heading(path: Path) -> None:
+    """Every link into notebook 01's sections names an anchor that 01's headings carry."""
+    first = REPO / "notebooks" / "01_rotations_in_the_plane_and_about_one_axis.ipynb"
+    links = [
+        anchor
+        for cell in read(path).cells
+        if cell.cell_type == "markdown"
+        for anchor in re.findall(rf"\]\({re.escape(first.name)}#([^)]+)\)", cell.source)
+    ]
+    missing = sorted(set(links) - heading_anchors(first))
+    assert not missing, f"{path.name} links to sections 01 does not mark: {missing}"
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS[1:], ids=IDS[1:])
+def test_the_first_use_of_the_frame_notation_links_back_to_01(path: Path) -> None:
+    """A notebook after 01 that names frames (``${}^{W}R_{B}$``) links, where it first does, to
+    01's section on the notation."""
+    cells = [cell.source for cell in read(path).cells if cell.cell_type == "markdown"]
+    using = [source for source in cells if "{}^{" in source]
+    if not using:
+        pytest.skip(f"{path.name} does not use the frame notation")
+    assert "01_rotations_in_the_plane_and_about_one_axis.ipynb#naming-frames-ar-b" in using[0], (
+        f"{path.name}: the first cell that names frames does not link to 01's section"
+    )
+
+
 def test_glossary_gives_the_range_of_atan2_as_numpy_computes_it() -> None:
     (cell,) = [cell for cell in read(GLOSSARY).cells if cell.source.startswith("### atan2")]
     assert "$[-180°, 180°]$" in cell.source

@@ -45,6 +45,8 @@ from eulerlib.integration import integrate_angular_velocity
 from eulerlib.interpolation import slerp
 from eulerlib.observations import align_vectors
 from eulerlib.plotting import (
+    AXIS_COLORS,
+    HIGHLIGHT_COLOR,
     aircraft_segments,
     animate_gimbal_lock,
     draw_aircraft,
@@ -84,8 +86,8 @@ def _rotations_in_the_plane_and_about_one_axis() -> Figure:
     fig = plt.figure(figsize=(7, 3.6))
     plane = fig.add_subplot(1, 2, 1)
     plane.plot(*letter_f.T, color="0.65", linewidth=3)
-    plane.plot(*(letter_f @ turn[:2, :2].T).T, color="tab:blue", linewidth=3)
-    for index, color in enumerate(("tab:red", "tab:green")):
+    plane.plot(*(letter_f @ turn[:2, :2].T).T, color=AXIS_COLORS[2], linewidth=3)
+    for index, color in enumerate(AXIS_COLORS[:2]):
         for vector, style in ((np.eye(2)[index], "--"), (turn[:2, index], "-")):
             arrow = {"arrowstyle": "-|>", "color": color, "linewidth": 2, "linestyle": style}
             plane.annotate("", xy=(vector[0], vector[1]), xytext=(0, 0), arrowprops=arrow)
@@ -125,8 +127,8 @@ def _euler_angles_rose_and_baker() -> Figure:
         body_axis = attitude[:, "xyz".index(axis)]
         turned = attitude @ elementary_rotation(axis, angle, degrees=True)
         ax = new_3d_axes(fig, (1, 3, number), limit=1.0, title=f"{number}. {name} {angle:g}°")
-        ax.view_init(elev=20, azim=-60)
-        ax.plot(*np.stack([-body_axis, body_axis], axis=1), color="gold", linewidth=5, alpha=0.6)
+        ax.view_init(elev=28, azim=-60)
+        ax.plot(*np.stack([-body_axis, body_axis], axis=1), color=HIGHLIGHT_COLOR, lw=5, alpha=0.7)
         draw_aircraft(ax, attitude, color="0.6", linestyle="--")
         draw_aircraft(ax, turned)
         attitude = turned
@@ -140,10 +142,17 @@ def _matrix_to_angles() -> Figure:
     angles = np.stack(np.broadcast_arrays(_ANGLES[0], pitch, _ANGLES[2]), axis=-1)
     recovered = matrix_to_euler(euler_to_matrix(angles, degrees=True), degrees=True, warn=False)
     fig, ax = plt.subplots(figsize=(6, 3.6), layout="constrained")
-    for column, name, color in zip(
-        range(3), ("yaw", "pitch", "roll"), ("tab:blue", "tab:green", "tab:red"), strict=True
+    for column, name, color, style in zip(
+        range(3), ("yaw", "pitch", "roll"), AXIS_COLORS[::-1], ("-", "--", "-."), strict=True
     ):
-        ax.plot(pitch, recovered[:, column], color=color, linewidth=2, label=f"recovered {name}")
+        ax.plot(
+            pitch,
+            recovered[:, column],
+            color=color,
+            linestyle=style,
+            lw=2,
+            label=f"recovered {name}",
+        )
     ax.plot(pitch, pitch, color="0.5", linestyle=":", label="pitch put in")
     ax.set_xlabel("pitch put into R_z(30°) R_y(pitch) R_x(10°), degrees")
     ax.set_ylabel("angles read back, degrees")
@@ -181,16 +190,19 @@ def _rotating_points_and_objects() -> Figure:
 
     segments = aircraft_segments()
     turn = rot_z(90.0, degrees=True)
-    marked = (((1.0, 0.0, 0.0), "tab:red", "nose"), ((-0.1, 0.9, 0.0), "tab:green", "wing tip"))
+    marked = (
+        ((1.0, 0.0, 0.0), AXIS_COLORS[0], "o", "nose"),
+        ((-0.05, 0.9, 0.0), AXIS_COLORS[1], "s", "wing tip"),
+    )
     fig, axes = plt.subplots(1, 2, figsize=(7, 3.6), layout="constrained")
     for ax, R, title in zip(
         axes, (np.eye(3), turn), ("before", "after p₁ = R p₀, a yaw of 90°"), strict=True
     ):
         for start, end in segments @ R.T:
             ax.plot([start[0], end[0]], [start[1], end[1]], color="0.25", linewidth=1.5)
-        for point, color, label in marked:
+        for point, color, marker, label in marked:
             x, y, _ = R @ np.array(point)
-            ax.plot(x, y, "o", color=color, label=label)
+            ax.plot(x, y, marker, color=color, markersize=7, label=label)
         ax.set(xlabel="x", xlim=(-1.2, 1.2), ylim=(-1.2, 1.2))
         ax.set_title(title, fontsize=10)
         ax.set_aspect("equal")

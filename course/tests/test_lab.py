@@ -46,6 +46,9 @@ REPO = Path(__file__).resolve().parents[2]
 LOOPBACK = "127.0.0.1"
 ANIMATED = "07_gimbal_lock_seen.ipynb"
 GLOSSARY = "glossary.ipynb"
+NOTATION = "01_rotations_in_the_plane_and_about_one_axis.ipynb"
+#: The anchor of 01's section on naming frames, which later notebooks link to.
+NOTATION_ANCHOR = "naming-frames-ar-b"
 CHROMIUM_ARGS = [
     "--disable-background-networking",
     "--disable-component-update",
@@ -85,6 +88,22 @@ RENDERED_MATH = """async () => {
     typeset: document.querySelectorAll(".jp-MarkdownCell mjx-container").length,
     texErrors: [...document.querySelectorAll("mjx-merror")].map((e) => e.textContent),
   };
+}"""
+
+
+#: The text of the heading that holds the anchor ``id``, once JupyterLab has rendered the
+#: notebook (null if there is none): where a link to ``notebook.ipynb#id`` lands. JupyterLab's
+#: sanitizer turns an ``id`` written in Markdown into ``data-jupyter-id``, which is what its
+#: links to a fragment look for.
+HEADING_WITH_ID = """async (id) => {
+  const app = window.jupyterapp;
+  const panel = app.shell.currentWidget;
+  await panel.context.ready;
+  for (const cell of panel.content.widgets) { await cell.ready; }
+  const name = CSS.escape(id);
+  const target = document.querySelector(`[data-jupyter-id="${name}"], [id="${name}"]`);
+  const heading = target && target.closest("h1, h2, h3, h4, h5, h6");
+  return heading ? heading.textContent : null;
 }"""
 
 
@@ -262,5 +281,19 @@ def test_the_glossary_typesets_in_jupyterlab_and_asks_no_other_host(
     facts = page.evaluate(RENDERED_MATH)
     page.wait_for_load_state("networkidle")
     assert facts["typeset"] >= 1 and facts["texErrors"] == []
+    assert requests.refused == []
+    page.close()
+
+
+def test_the_section_on_naming_frames_has_its_anchor_in_jupyterlab(
+    lab: Lab, browser: tuple[Any, Requests]
+) -> None:
+    """Later notebooks link to ``01_….ipynb#naming-frames-ar-b``: JupyterLab must render an
+    element with that id in the section's heading (its own heading ids keep the letter case and
+    the symbols, so the heading carries the anchor explicitly)."""
+    context, requests = browser
+    page = open_notebook(context, lab, NOTATION, requests)
+    heading = page.evaluate(HEADING_WITH_ID, NOTATION_ANCHOR)
+    assert heading is not None and "Naming frames" in heading, heading
     assert requests.refused == []
     page.close()

@@ -20,14 +20,18 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure, FigureBase
     from mpl_toolkits.mplot3d.axes3d import Axes3D
 
-AXIS_COLORS = ("tab:red", "tab:green", "tab:blue")
+# The colours are Okabe and Ito's set for readers with any kind of colour vision deficiency
+# (Okabe & Ito, "Color Universal Design", 2008): no two of them are told apart by red versus
+# green alone, and the axes carry their letters as well, so that no colour has to be told at all.
+#: Colours of the x, y and z axes: vermillion, bluish green, blue.
+AXIS_COLORS = ("#D55E00", "#009E73", "#0072B2")
 AXIS_LETTERS = ("x", "y", "z")
-#: Colours of the outer, middle and inner gimbal ring.
-RING_COLORS = ("tab:purple", "tab:orange", "tab:cyan")
+#: Colours of the outer, middle and inner gimbal ring: reddish purple, orange, sky blue.
+RING_COLORS = ("#CC79A7", "#E69F00", "#56B4E9")
 #: Radii of the outer, middle and inner gimbal ring.
 RING_RADII = (1.0, 0.8, 0.6)
-#: Colour of the axis a step of a sequence turns about.
-HIGHLIGHT_COLOR = "gold"
+#: Colour of the axis a step of a sequence turns about: yellow, unlike every colour above.
+HIGHLIGHT_COLOR = "#F0E442"
 PRIME = "'"
 _VIEW = {"elev": 28.0, "azim": 50.0}
 

@@ -7,6 +7,7 @@ Rose (2015) at work.
 
 from __future__ import annotations
 
+import itertools
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -41,9 +42,12 @@ UP_AXES = ("z", "y")
 def aircraft_segments(*, up: str = "z") -> NDArray[np.float64]:
     """A wireframe aircraft as line segments: nose along +x, vertical fin along +``up``.
 
-    The body is symmetric about the plane spanned by x and ``up``; the nose is the point
-    ``(1, 0, 0)``, the tail reaches back to x = -0.9, the wings span ±0.9 along the third axis,
-    and the fin (and the cockpit bump) rise along ``up`` up to 0.4.
+    A fuselage (keel, spine with a windscreen and cabin roof, sides at half height and two
+    cross-sections), swept wings, a tailplane and a fin, so that the nose, the wings and the top
+    can be told apart from any side. The body is symmetric about the plane spanned by x and
+    ``up``; the nose is the point ``(1, 0, 0)``, the belly and the wings lie in the plane
+    ``up = 0``, the tail reaches back to x = -0.96, the wings span ±0.9 along the third axis,
+    and the fin rises along ``up`` to 0.4. Segment 0 is the keel, from the tail to the nose.
 
     Parameters
     ----------
@@ -74,28 +78,61 @@ def aircraft_segments(*, up: str = "z") -> NDArray[np.float64]:
     return _segments(check_choice(up, "up", UP_AXES))
 
 
+def _polyline(*points: tuple[float, float, float]) -> list[tuple[Any, Any]]:
+    """The segments of a line through ``points``, in order."""
+    return list(itertools.pairwise(points))
+
+
+def _ring(forward: float, half_width: float, height: float) -> list[tuple[Any, Any]]:
+    """Half a cross-section of the fuselage (the side > 0), an ellipse from belly to top."""
+    angles = np.radians([-90.0, -45.0, 0.0, 45.0, 90.0])
+    middle = height / 2.0
+    points = [
+        (forward, float(half_width * np.cos(a)), float(middle + middle * np.sin(a))) for a in angles
+    ]
+    return _polyline(*points)
+
+
 def _segments(up: str) -> NDArray[np.float64]:
     """Body of :func:`aircraft_segments` for a checked up axis."""
-    # Body coordinates: (forward, side, up).
-    half = [
-        ((0.3, 0.0, 0.0), (-0.1, 0.9, 0.0)),  # wing leading edge
-        ((-0.1, 0.9, 0.0), (-0.3, 0.9, 0.0)),  # wing tip
-        ((-0.3, 0.9, 0.0), (-0.2, 0.0, 0.0)),  # wing trailing edge
-        ((-0.6, 0.0, 0.0), (-0.85, 0.35, 0.0)),  # tailplane leading edge
-        ((-0.85, 0.35, 0.0), (-0.9, 0.0, 0.0)),  # tailplane trailing edge
-    ]
+    # Body coordinates: (forward, side, up). The belly is the plane up = 0, the wings are low
+    # on the fuselage, in that plane; everything else rises above it.
+    top = 0.16  # height of the fuselage
+    width = 0.09  # half width of the fuselage
     body = [
-        ((-0.9, 0.0, 0.0), (1.0, 0.0, 0.0)),  # fuselage, tail to nose
-        ((-0.55, 0.0, 0.0), (-0.8, 0.0, 0.4)),  # fin leading edge
-        ((-0.8, 0.0, 0.4), (-0.9, 0.0, 0.4)),  # fin top
-        ((-0.9, 0.0, 0.4), (-0.9, 0.0, 0.0)),  # fin trailing edge
-        ((0.75, 0.0, 0.0), (0.55, 0.0, 0.12)),  # cockpit
-        ((0.55, 0.0, 0.12), (0.3, 0.0, 0.12)),
-        ((0.3, 0.0, 0.12), (0.2, 0.0, 0.0)),
+        ((-0.9, 0.0, 0.0), (1.0, 0.0, 0.0)),  # keel, tail to nose
+        *_polyline(  # spine: nose, windscreen, cabin roof, tail cone
+            (1.0, 0.0, 0.0),
+            (0.88, 0.0, 0.09),
+            (0.72, 0.0, 0.2),
+            (0.5, 0.0, 0.21),
+            (0.35, 0.0, top),
+            (-0.55, 0.0, top),
+            (-0.9, 0.0, 0.11),
+            (-0.9, 0.0, 0.0),
+        ),
+        *_polyline((-0.55, 0.0, top), (-0.84, 0.0, 0.4), (-0.96, 0.0, 0.4), (-0.9, 0.0, 0.11)),
     ]
-    half_array = np.array(half)
+    half = [
+        *_polyline(  # side of the fuselage, at half its height
+            (1.0, 0.0, 0.0),
+            (0.86, 0.06, 0.07),
+            (0.65, width, 0.08),
+            (-0.45, width, 0.08),
+            (-0.9, 0.02, 0.08),
+        ),
+        *_ring(0.65, width, top),
+        *_ring(-0.45, width, top),
+        *_polyline(  # wing: leading edge, tip, trailing edge
+            (0.3, width, 0.0), (-0.05, 0.9, 0.0), (-0.25, 0.9, 0.0), (-0.2, width, 0.0)
+        ),
+        *_polyline(  # tailplane, at half the fuselage's height
+            (-0.62, 0.05, 0.08), (-0.84, 0.35, 0.08), (-0.94, 0.35, 0.08), (-0.9, 0.02, 0.08)
+        ),
+    ]
+    half_array = np.array(half, dtype=np.float64)
     mirrored = half_array * np.array([1.0, -1.0, 1.0])
-    segments = np.concatenate([np.array(body), half_array, mirrored])
+    segments = np.concatenate([np.array(body, dtype=np.float64), half_array, mirrored])
     if up == "y":  # (forward, side, up) -> (x, y, z) = (forward, up, side)
         segments = segments[..., [0, 2, 1]]
     return segments

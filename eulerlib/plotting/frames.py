@@ -146,7 +146,8 @@ def draw_frame(
     linewidth : float, optional
         Width of the shafts; > 0.
     colors : sequence of 3 colours, optional
-        Colours of the x, y, z arrows; red, green, blue by default.
+        Colours of the x, y, z arrows; by default :data:`AXIS_COLORS` (vermillion, bluish
+        green, blue: told apart with any colour vision, and by their labels too).
     labels : sequence of 3 str, optional
         Names of the axes, written at the arrow tips (``""`` writes none).
     label_suffix : str, optional

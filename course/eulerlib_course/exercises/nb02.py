@@ -9,7 +9,7 @@ from numpy.typing import NDArray
 
 from eulerlib import elementary_rotation, euler_to_matrix
 
-from .judges import AnglesJudge, ArrayJudge, Mistake
+from .judges import ArrayJudge, Mistake
 from .key import Example, Exercise
 
 
@@ -19,6 +19,64 @@ def _turn(axis: str, angle: float, degrees: bool = True) -> NDArray[np.float64]:
 
 # 02.1: 30° about the fixed x axis, then 45° about the fixed z axis
 _FIXED_X_THEN_Z = _turn("z", 45.0) @ _turn("x", 30.0)
+
+# 02.2: a drone turned by a yaw about the world's z, a pitch about the world's fixed y, then a
+# roll about its own nose: fixed-axes turns multiply from the left, the own-axis turn from the
+# right, so W_R_B = R_y(θ) R_z(ψ) R_x(φ)
+_MIXED_ANGLES = [50.0, -30.0, 70.0]  # ψ, θ, φ of the teacher's edition, degrees
+
+
+def _mixed_angles() -> NDArray[np.float64]:
+    return np.array(_MIXED_ANGLES)
+
+
+def _some_mixed_angles(rng: np.random.Generator) -> NDArray[np.float64]:
+    """A student's ψ, θ, φ in whole degrees, each at least 15° from 0 (so that every mistake
+    below gives another matrix), the pitch within ±60°."""
+    yaw, roll = (float(rng.choice([-1, 1]) * rng.integers(15, 151)) for _ in range(2))
+    pitch = float(rng.choice([-1, 1]) * rng.integers(15, 61))
+    return np.array([yaw, pitch, roll])
+
+
+def _judge_mixed(angles: NDArray[np.float64]) -> ArrayJudge:
+    yaw, pitch, roll = (float(a) for a in angles)
+
+    def product(order: str, degrees: bool = True) -> NDArray[np.float64]:
+        of = {"z": yaw, "y": pitch, "x": roll}
+        result = np.eye(3)
+        for axis in order:
+            result = result @ _turn(axis, of[axis], degrees)
+        return result
+
+    return ArrayJudge(
+        product("yzx"),
+        what="your matrix",
+        rotation=True,
+        mistakes=(
+            Mistake(
+                product("zyx"),
+                "this is Rose's product R_z R_y R_x, in which the pitch turns about the drone's "
+                "own y axis; here the pitch is about the world's fixed y axis, so it multiplies "
+                "the yaw from the left",
+            ),
+            Mistake(
+                product("xyz"),
+                "this reads all three turns about the world's fixed axes; the roll is about the "
+                "drone's own nose, wherever the first two turns left it, so it multiplies from "
+                "the right",
+            ),
+            Mistake(
+                product("xzy"),
+                "the pitch and the roll stand on the wrong sides: a turn about a fixed axis "
+                "multiplies from the left, a turn about the drone's own axis from the right",
+            ),
+            Mistake(
+                product("yzx", degrees=False),
+                "these are turns by radians: pass degrees=True",
+            ),
+        ),
+    )
+
 
 # 02.3: the nose after a yaw of 90°, then a pitch of 30° about the moved wing axis: the yaw
 # turns the nose to +y, the pitch tips it down (in the z-up frame), by 30°
@@ -79,15 +137,51 @@ EXERCISES = [
     Exercise(
         id="02.2",
         level="apply",
-        judge=AnglesJudge([60.0, 45.0, 30.0], "xyz", degrees=True, what="your xyz angles"),
+        judge=_judge_mixed(_mixed_angles()),
+        per_student=_some_mixed_angles,
+        judged=_judge_mixed,
+        given=_mixed_angles,
         examples=(
-            Example("[60 - 360, 45, 30 + 360]", "correct"),
-            Example("np.array([60.0, 45.0, 30.0])", "correct"),
-            Example("[30, 45, 60]", "off", "reverse order"),
-            Example("np.radians([60, 45, 30])", "off", "radians"),
-            Example("[60, -45, 30]", "off", "wrong sign"),
+            Example(
+                "rot_y(angles_ex[1], degrees=True) @ rot_z(angles_ex[0], degrees=True)"
+                " @ rot_x(angles_ex[2], degrees=True)",
+                "correct",
+            ),
+            Example(
+                "euler_to_matrix([angles_ex[1], angles_ex[0], angles_ex[2]], 'YZX', degrees=True)",
+                "correct",
+            ),
+            Example(
+                "compose(rot_y(angles_ex[1], degrees=True), rot_z(angles_ex[0], degrees=True),"
+                " rot_x(angles_ex[2], degrees=True))",
+                "correct",
+            ),
+            Example("euler_to_matrix(angles_ex, 'ZYX', degrees=True)", "off", "Rose's product"),
+            Example(
+                "rot_x(angles_ex[2], degrees=True) @ rot_y(angles_ex[1], degrees=True)"
+                " @ rot_z(angles_ex[0], degrees=True)",
+                "off",
+                "own nose",
+            ),
+            Example(
+                "rot_x(angles_ex[2], degrees=True) @ rot_z(angles_ex[0], degrees=True)"
+                " @ rot_y(angles_ex[1], degrees=True)",
+                "off",
+                "wrong sides",
+            ),
+            Example(
+                "rot_y(angles_ex[1]) @ rot_z(angles_ex[0]) @ rot_x(angles_ex[2])",
+                "off",
+                "radians",
+            ),
+            Example(
+                "(rot_y(angles_ex[1], degrees=True) @ rot_z(angles_ex[0], degrees=True)"
+                " @ rot_x(angles_ex[2], degrees=True)).T",
+                "off",
+                "transpose of the answer",
+            ),
         ),
-        forbidden=("[60, 45, 30]", "[roll, pitch, yaw]"),
+        forbidden=("rot_y(pitch, degrees=True) @ rot_z(yaw", "W_R_2 @ rot_x"),
     ),
     Exercise(
         id="02.3",

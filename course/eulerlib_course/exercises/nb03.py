@@ -7,8 +7,9 @@ from functools import cached_property
 from typing import Any
 
 import numpy as np
+from numpy.typing import NDArray
 
-from eulerlib import euler_to_matrix
+from eulerlib import elementary_rotation, euler_to_matrix
 
 from .judges import ArrayJudge, ChoiceJudge, ExpressionJudge, Mistake, rounded_to
 from .key import Example, Exercise
@@ -59,8 +60,69 @@ def _row_as_column(matrix: _Later, row: int) -> _Later:
     return _Later(lambda: matrix._sympy_()[row, :].T)
 
 
-# 03.1: z-x-z about the moving axes: the matrices in the order of the turns
-_ZXZ = _product(("z", "alpha"), ("x", "beta"), ("z", "gamma"))
+# 03.1: Baker's heading h about y (up), attitude a about the new z, bank b about the newest x:
+# W_R_B = R_y(h) R_z(a) R_x(b), for the learner's own angles
+_HAB = [120.0, 25.0, -40.0]  # h, a, b of the teacher's edition, degrees
+
+
+def _hab() -> NDArray[np.float64]:
+    return np.array(_HAB)
+
+
+def _some_hab(rng: np.random.Generator) -> NDArray[np.float64]:
+    """A student's h, a, b in whole degrees: heading and bank at least 20° from 0 and 10° apart
+    (so that swapping them is another matrix), attitude 15° to 70° either way (away from the
+    poles)."""
+    while True:
+        heading, bank = (float(rng.choice([-1, 1]) * rng.integers(20, 171)) for _ in range(2))
+        if abs(heading - bank) >= 10.0:
+            break
+    attitude = float(rng.choice([-1, 1]) * rng.integers(15, 71))
+    return np.array([heading, attitude, bank])
+
+
+def _judge_hab(angles: NDArray[np.float64]) -> ArrayJudge:
+    h, a, b = (float(x) for x in angles)
+
+    def product(*turns: tuple[str, float], degrees: bool = True) -> NDArray[np.float64]:
+        result = np.eye(3)
+        for axis, angle in turns:
+            result = result @ elementary_rotation(axis, angle, degrees=degrees)
+        return result
+
+    return ArrayJudge(
+        product(("y", h), ("z", a), ("x", b)),
+        what="your matrix",
+        rotation=True,
+        mistakes=(
+            Mistake(
+                product(("z", h), ("y", a), ("x", b)),
+                "this is Rose's z-up product with Baker's numbers: in Baker's frame y is up, so "
+                "the heading turns about y and the attitude about the new z",
+            ),
+            Mistake(
+                product(("x", b), ("z", a), ("y", h)),
+                "the matrices stand in the reverse order of the turns, which reads them about "
+                "the fixed axes; Baker's turns are about the moving axes, so they stand in the "
+                "order they happen",
+            ),
+            Mistake(
+                product(("y", b), ("z", a), ("x", h)),
+                "heading and bank are swapped: the heading turns about the vertical y, the bank "
+                "about the nose x",
+            ),
+            Mistake(
+                product(("y", h), ("x", a), ("z", b)),
+                "the attitude turns about z, not x: with y up and the nose along x, the wing "
+                "lies along z, and the attitude (the pitch) turns about the wing",
+            ),
+            Mistake(
+                product(("y", h), ("z", a), ("x", b), degrees=False),
+                "these are turns by radians: pass degrees=True",
+            ),
+        ),
+    )
+
 
 # 03.3: Rose's numbers read about the fixed axes, "zyx": R_x(u) R_y(v) R_z(w); the nose is column 1
 _ZYX_FIXED = _product(("x", "u"), ("y", "v"), ("z", "w"))
@@ -71,36 +133,27 @@ EXERCISES = [
     Exercise(
         id="03.1",
         level="apply",
-        judge=ExpressionJudge(
-            _ZXZ,
-            what="your z-x-z matrix",
-            mistakes=(
-                Mistake(
-                    _product(("z", "gamma"), ("x", "beta"), ("z", "alpha")),
-                    "your product is in the reverse order of the turns, which is z-x-z about "
-                    "the fixed axes; about the moving axes the matrices stand in the order of the "
-                    "turns",
-                ),
-                Mistake(
-                    _product(("z", "alpha"), ("y", "beta"), ("z", "gamma")),
-                    "your middle turn is about y; the question asks for a turn about the new x",
-                ),
-            ),
-        ),
+        judge=_judge_hab(_hab()),
+        per_student=_some_hab,
+        judged=_judge_hab,
+        given=_hab,
         examples=(
-            Example('euler_matrix((alpha, beta, gamma), "ZXZ")', "correct"),
-            Example('euler_matrix((gamma, beta, alpha), "zxz")', "correct"),
             Example(
-                'elementary_matrix("z", gamma) * elementary_matrix("x", beta)'
-                ' * elementary_matrix("z", alpha)',
-                "off",
-                "reverse order of the turns",
+                'elementary_rotation("y", hab_ex[0], degrees=True)'
+                ' @ elementary_rotation("z", hab_ex[1], degrees=True)'
+                ' @ elementary_rotation("x", hab_ex[2], degrees=True)',
+                "correct",
             ),
-            Example('euler_matrix((alpha, beta, gamma), "ZYZ")', "off", "middle turn is about y"),
-            Example('euler_matrix((alpha, beta, gamma), "ZXZ").T', "off", "transpose"),
-            Example("'Rz Rx Rz'", "off", "is text"),
+            Example("heading_attitude_bank_to_matrix(*hab_ex, degrees=True)", "correct"),
+            Example('euler_to_matrix(hab_ex[::-1], "xzy", degrees=True)', "correct"),
+            Example('euler_to_matrix(hab_ex, "ZYX", degrees=True)', "off", "z-up product"),
+            Example('euler_to_matrix(hab_ex, "yzx", degrees=True)', "off", "reverse order"),
+            Example('euler_to_matrix(hab_ex[::-1], "YZX", degrees=True)', "off", "swapped"),
+            Example('euler_to_matrix(hab_ex, "YXZ", degrees=True)', "off", "wing lies along z"),
+            Example('euler_to_matrix(hab_ex, "YZX")', "off", "radians"),
+            Example('euler_to_matrix(hab_ex, "YZX", degrees=True).T', "off", "transpose"),
         ),
-        forbidden=('euler_matrix((alpha, beta, gamma), "ZXZ")',),
+        forbidden=("W_R_1 @ one_R_2 @ two_R_B", 'elementary_rotation("y", heading'),
     ),
     Exercise(
         id="03.2",

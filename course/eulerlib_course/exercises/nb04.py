@@ -10,18 +10,57 @@ from eulerlib import euler_to_matrix
 from .judges import ArrayJudge, Mistake
 from .key import Example, Exercise
 
-# 04.1: a sensor turned by yaw, pitch, roll; the point before the turn is asked for.
-_SENSOR_YPR = [30.0, -15.0, 60.0]
-_POINT_BEFORE = np.array([1.5, -0.5, 2.0])
+# 04.1: an aircraft's attitude W_R_B; a light on its wing tip, given in body coordinates, is
+# asked for in world coordinates, and a landmark given in world coordinates in body coordinates
+_ATTITUDE_04_1 = [35.0, -20.0, 50.0]  # yaw, pitch, roll of the teacher's edition, degrees
+_B_LIGHT = np.array([-0.2, 4.5, 0.3])  # as the exercise cell writes it: B-coordinates, metres
+_W_LANDMARK = np.array([30.0, -10.0, 5.0])  # W-coordinates, metres from the aircraft
 
 
-def _sensor() -> NDArray[np.float64]:
-    return euler_to_matrix(_SENSOR_YPR, "rose", degrees=True)
+def _attitude_04_1() -> NDArray[np.float64]:
+    return euler_to_matrix(_ATTITUDE_04_1, "rose", degrees=True)
 
 
-def _sensor_data() -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    R = _sensor()
-    return R, R @ _POINT_BEFORE
+def _some_attitude(rng: np.random.Generator) -> NDArray[np.float64]:
+    """A student's W_R_B: yaw and roll in whole degrees, at least 10° from 0, pitch within ±60°."""
+    yaw, roll = (float(rng.choice([-1, 1]) * rng.integers(10, 171)) for _ in range(2))
+    pitch = float(rng.choice([-1, 1]) * rng.integers(10, 61))
+    return euler_to_matrix([yaw, pitch, roll], "rose", degrees=True)
+
+
+def _judge_there_and_back(W_R_B: NDArray[np.float64]) -> ArrayJudge:
+    to_world, to_body = W_R_B @ _B_LIGHT, W_R_B.T @ _W_LANDMARK
+    wrong_world, wrong_body = W_R_B.T @ _B_LIGHT, W_R_B @ _W_LANDMARK
+    return ArrayJudge(
+        np.array([to_world, to_body]),
+        what="your two points",
+        tol=1e-9,
+        mistakes=(
+            Mistake(
+                np.array([wrong_world, to_body]),
+                "the light went the wrong way: ᵂR_B takes B-coordinates to W-coordinates, "
+                "ᵂp = ᵂR_B ᴮp; its transpose goes from W to B",
+            ),
+            Mistake(
+                np.array([to_world, wrong_body]),
+                "the light is right; the landmark went the wrong way: from W back to B is "
+                "ᴮR_W = (ᵂR_B)ᵀ, since the inner frames must cancel",
+            ),
+            Mistake(
+                np.array([wrong_world, wrong_body]),
+                "both points went the wrong way: ᵂR_B maps B-coordinates to W-coordinates, and "
+                "its transpose W to B; read the frames of ᴬR_B from right to left",
+            ),
+            Mistake(
+                np.array([_B_LIGHT, _W_LANDMARK]),
+                "these are the numbers as given; each point must be carried into the other frame",
+            ),
+            Mistake(
+                np.array([to_body, to_world]),
+                "the rows are in the other order: first the light in W, then the landmark in B",
+            ),
+        ),
+    )
 
 
 # 04.2: yaw 90°, then roll 90° about the moved nose; where the left wing (body y) points.
@@ -69,38 +108,22 @@ EXERCISES = [
     Exercise(
         id="04.1",
         level="apply",
-        judge=ArrayJudge(
-            _POINT_BEFORE,
-            what="your point",
-            mistakes=(
-                Mistake(
-                    _sensor() @ _sensor() @ _POINT_BEFORE,
-                    "that turns the point a second time; to undo the rotation use its "
-                    "transpose (eq 7)",
-                ),
-                Mistake(
-                    euler_to_matrix([-a for a in _SENSOR_YPR], "rose", degrees=True)
-                    @ _sensor()
-                    @ _POINT_BEFORE,
-                    "negating yaw, pitch and roll but keeping Rose's order is not the inverse: "
-                    "the last turn (the roll) must be undone first, which the transpose does",
-                ),
-            ),
-        ),
-        given=_sensor_data,
+        judge=_judge_there_and_back(_attitude_04_1()),
+        per_student=_some_attitude,
+        judged=_judge_there_and_back,
+        given=_attitude_04_1,
         examples=(
-            Example("q_ex @ R_ex", "correct"),
-            Example("np.linalg.solve(R_ex, q_ex)", "correct"),
-            Example("R_ex @ q_ex", "off", "second time"),
-            Example(
-                "euler_to_matrix([-30, 15, -60], 'rose', degrees=True) @ q_ex",
-                "off",
-                "last turn",
-            ),
-            Example("-(R_ex.T @ q_ex)", "off", "opposite way"),
-            Example("R_ex.T", "off", "shape (3, 3)"),
+            Example("np.array([W_R_B @ B_light, W_R_B.T @ W_landmark])", "correct"),
+            Example("[B_light @ W_R_B.T, W_landmark @ W_R_B]", "correct"),
+            Example("np.vstack([W_R_B @ B_light, np.linalg.solve(W_R_B, W_landmark)])", "correct"),
+            Example("[W_R_B.T @ B_light, W_R_B.T @ W_landmark]", "off", "light went the wrong"),
+            Example("[W_R_B @ B_light, W_R_B @ W_landmark]", "off", "landmark went the wrong"),
+            Example("[W_R_B.T @ B_light, W_R_B @ W_landmark]", "off", "both points"),
+            Example("[B_light, W_landmark]", "off", "as given"),
+            Example("[W_R_B.T @ W_landmark, W_R_B @ B_light]", "off", "other order"),
+            Example("W_R_B @ B_light", "off", "shape (2, 3)"),
         ),
-        forbidden=("1.5, -0.5", "-0.5, 2"),
+        forbidden=("W_R_B @ B_light, W_R_B.T", "B_R_W @ W_landmark"),
     ),
     Exercise(
         id="04.2",
@@ -155,9 +178,9 @@ EXERCISES = [
             mistakes=(
                 Mistake(
                     _camera_mistake("Rt Mt"),
-                    "the two inverses are in the wrong order: camera → world is R M (the "
-                    "mounting first), so world → camera is (R M)ᵀ = Mᵀ Rᵀ: undo the attitude "
-                    "first, then the mounting",
+                    "the two inverses are in the wrong order: camera → world is ᵂR_B ᴮR_C (the "
+                    "inner frames cancel), so world → camera is its transpose, (ᴮR_C)ᵀ (ᵂR_B)ᵀ: "
+                    "undo the attitude first, then the mounting",
                 ),
                 Mistake(
                     _camera_mistake("R M"),
@@ -167,24 +190,24 @@ EXERCISES = [
                 Mistake(
                     _camera_mistake("Rt"),
                     "those are the beacon's body coordinates (nose, left wing, fin); the "
-                    "camera's axes differ from the body's by the mounting M",
+                    "camera's axes differ from the body's by the mounting ᴮR_C",
                 ),
                 Mistake(
                     _camera_mistake("M Rt"),
-                    "the body coordinates are right, but the mounting turns camera into body "
-                    "coordinates; body → camera is its transpose",
+                    "the body coordinates are right, but the mounting ᴮR_C turns camera into "
+                    "body coordinates; body → camera is its transpose",
                 ),
             ),
         ),
         given=_camera_data,
         examples=(
-            Example("(R_ex3 @ M_ex3).T @ b_world", "correct"),
-            Example("b_world @ R_ex3 @ M_ex3", "correct"),
-            Example("R_ex3.T @ M_ex3.T @ b_world", "off", "wrong order"),
-            Example("R_ex3 @ M_ex3 @ b_world", "off", "other way"),
-            Example("R_ex3.T @ b_world", "off", "body coordinates"),
-            Example("M_ex3 @ R_ex3.T @ b_world", "off", "its transpose"),
+            Example("(W_R_B_ex3 @ B_R_C_ex3).T @ W_beacon", "correct"),
+            Example("W_beacon @ W_R_B_ex3 @ B_R_C_ex3", "correct"),
+            Example("W_R_B_ex3.T @ B_R_C_ex3.T @ W_beacon", "off", "wrong order"),
+            Example("W_R_B_ex3 @ B_R_C_ex3 @ W_beacon", "off", "other way"),
+            Example("W_R_B_ex3.T @ W_beacon", "off", "body coordinates"),
+            Example("B_R_C_ex3 @ W_R_B_ex3.T @ W_beacon", "off", "its transpose"),
         ),
-        forbidden=("M_ex3.T @ b_body", "M_ex3.T @ R_ex3.T"),
+        forbidden=("B_R_C_ex3.T @ B_beacon", "B_R_C_ex3.T @ W_R_B_ex3.T"),
     ),
 ]
