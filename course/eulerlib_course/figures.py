@@ -470,9 +470,7 @@ def _fusing_gyroscope_gravity_and_field() -> Figure:
         linewidth=1.8,
         label="gyroscope: smooth, drifts",
     )
-    ax.plot(
-        times, _plotted(fused, 4), color="#0072B2", linewidth=2.2, label="complementary filter"
-    )
+    ax.plot(times, _plotted(fused, 4), color="#0072B2", linewidth=2.2, label="complementary filter")
     ax.plot(times, _plotted(truth, 4), "k:", linewidth=1.2, label="true tilt")
     ax.set_xlabel("time, s")
     ax.set_ylabel("tilt, degrees")
