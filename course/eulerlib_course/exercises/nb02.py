@@ -96,6 +96,54 @@ def _conjugate(outer: NDArray[np.float64], inner: NDArray[np.float64]) -> NDArra
     return conjugate
 
 
+def _judge_moved_axis(A: NDArray[np.float64]) -> ArrayJudge:
+    """The judge of 02.4: the turn by 30° about the second column of ``A``, in fixed axes."""
+    return ArrayJudge(
+        _conjugate(A, _turn("y", 30.0)),
+        what="your matrix",
+        rotation=True,
+        mistakes=(
+            Mistake(
+                _turn("y", 30.0),
+                "this turns about the fixed y axis; the wing axis is where the attitude has "
+                "moved y, the second column of A_ex: undo A_ex, turn about y, redo A_ex",
+            ),
+            Mistake(
+                A @ _turn("y", 30.0),
+                "this is the aircraft's attitude after the pitch (A·B), not the turn itself; "
+                "the turn alone, written in the fixed axes, still has to undo A_ex",
+            ),
+            Mistake(
+                _conjugate(A.T, _turn("y", 30.0)),
+                "this turns about the second row of A_ex, not about the wing axis (its second "
+                "column): undoing A_ex comes first, so the transpose stands on the right",
+            ),
+            Mistake(
+                _conjugate(A, _turn("y", 30.0, False)),
+                "this is a turn by 30 radians: pass degrees=True",
+            ),
+        ),
+    )
+
+
+def _some_attitude(rng: np.random.Generator) -> NDArray[np.float64]:
+    """A student's attitude A_ex: yaw, pitch, roll in whole degrees (Z-Y-X, as the teacher's),
+    each at least 15° from 0 and the pitch within ±60°, drawn again until the wing axis (second
+    column) and the second row are each at least 20° from the fixed y axis and from each other,
+    so that every mistake of the judge is another matrix than the answer and than each other."""
+    while True:
+        yaw, roll = (float(rng.choice([-1, 1]) * rng.integers(15, 151)) for _ in range(2))
+        pitch = float(rng.choice([-1, 1]) * rng.integers(15, 61))
+        A = euler_to_matrix([yaw, pitch, roll], "ZYX", degrees=True)
+        axes = (A[:, 1], A[1, :], np.array([0.0, 1.0, 0.0]))
+        if all(
+            float(axes[i] @ axes[j]) < math.cos(math.radians(20.0))
+            for i in range(3)
+            for j in range(i + 1, 3)
+        ):
+            return A
+
+
 EXERCISES = [
     Exercise(
         id="02.1",
@@ -229,32 +277,9 @@ EXERCISES = [
     Exercise(
         id="02.4",
         level="extend",
-        judge=ArrayJudge(
-            _conjugate(_attitude(), _turn("y", 30.0)),
-            what="your matrix",
-            rotation=True,
-            mistakes=(
-                Mistake(
-                    _turn("y", 30.0),
-                    "this turns about the fixed y axis; the wing axis is where the attitude has "
-                    "moved y, the second column of A_ex: undo A_ex, turn about y, redo A_ex",
-                ),
-                Mistake(
-                    _attitude() @ _turn("y", 30.0),
-                    "this is the aircraft's attitude after the pitch (A·B), not the turn itself; "
-                    "the turn alone, written in the fixed axes, still has to undo A_ex",
-                ),
-                Mistake(
-                    _conjugate(_attitude().T, _turn("y", 30.0)),
-                    "this turns about the second row of A_ex, not about the wing axis (its second "
-                    "column): undoing A_ex comes first, so the transpose stands on the right",
-                ),
-                Mistake(
-                    _conjugate(_attitude(), _turn("y", 30.0, False)),
-                    "this is a turn by 30 radians: pass degrees=True",
-                ),
-            ),
-        ),
+        judge=_judge_moved_axis(_attitude()),
+        per_student=_some_attitude,
+        judged=_judge_moved_axis,
         given=_attitude,
         examples=(
             Example("Rotation.from_rotvec(np.radians(30) * A_ex[:, 1]).as_matrix()", "correct"),

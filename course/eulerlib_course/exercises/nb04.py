@@ -79,7 +79,11 @@ _ATTITUDE_YPR = [40.0, 10.0, -20.0]
 _BEACON = np.array([120.0, 60.0, -25.0])
 
 
-def _camera_data() -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+_CameraData = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]
+_PRODUCTS = ("Rt Mt", "R M", "Rt", "M Rt")
+
+
+def _camera_data() -> _CameraData:
     return (
         euler_to_matrix(_ATTITUDE_YPR, "rose", degrees=True),
         _CAMERA_MOUNT.copy(),
@@ -87,14 +91,36 @@ def _camera_data() -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np
     )
 
 
-def _camera_reference() -> NDArray[np.float64]:
+def _some_camera_data(rng: np.random.Generator) -> _CameraData:
+    """A student's attitude and beacon (the camera's mounting is the same for everyone).
+
+    Yaw and roll in whole degrees at least 10° from 0, pitch within ±45°, the beacon in whole
+    metres, drawn again until the beacon is at least 20 m in front of the lens and every mistake
+    of the judge lands at least 5 m from the answer and from each other mistake.
+    """
+    while True:
+        yaw, roll = (float(rng.choice([-1, 1]) * rng.integers(10, 171)) for _ in range(2))
+        pitch = float(rng.choice([-1, 1]) * rng.integers(5, 46))
+        R = euler_to_matrix([yaw, pitch, roll], "rose", degrees=True)
+        beacon = rng.integers(-150, 151, 3).astype(np.float64)
+        data = (R, _CAMERA_MOUNT.copy(), beacon)
+        points = [_camera_reference(data), *(_camera_mistake(data, p) for p in _PRODUCTS)]
+        if points[0][2] >= 20.0 and all(
+            np.linalg.norm(points[i] - points[j]) >= 5.0
+            for i in range(len(points))
+            for j in range(i + 1, len(points))
+        ):
+            return data
+
+
+def _camera_reference(data: _CameraData) -> NDArray[np.float64]:
     # (R M)⁻¹ computed as a general inverse, without using that R and M are rotations
-    R, M, b = _camera_data()
+    R, M, b = data
     return np.asarray(np.linalg.solve(R @ M, b), dtype=np.float64)
 
 
-def _camera_mistake(product: str) -> NDArray[np.float64]:
-    R, M, b = _camera_data()
+def _camera_mistake(data: _CameraData, product: str) -> NDArray[np.float64]:
+    R, M, b = data
     products = {
         "Rt Mt": R.T @ M.T @ b,
         "R M": R @ M @ b,
@@ -102,6 +128,38 @@ def _camera_mistake(product: str) -> NDArray[np.float64]:
         "M Rt": M @ R.T @ b,
     }
     return np.asarray(products[product], dtype=np.float64)
+
+
+def _judge_camera(data: _CameraData) -> ArrayJudge:
+    """The judge of 04.3: the beacon of ``data`` in the camera's coordinates."""
+    return ArrayJudge(
+        _camera_reference(data),
+        what="the beacon in camera coordinates",
+        tol=1e-9,
+        mistakes=(
+            Mistake(
+                _camera_mistake(data, "Rt Mt"),
+                "the two inverses are in the wrong order: camera → world is ᵂR_B ᴮR_C (the "
+                "inner frames cancel), so world → camera is its transpose, (ᴮR_C)ᵀ (ᵂR_B)ᵀ: "
+                "undo the attitude first, then the mounting",
+            ),
+            Mistake(
+                _camera_mistake(data, "R M"),
+                "that goes the other way, from camera coordinates to the world; the "
+                "question starts in the world, so both matrices must be undone",
+            ),
+            Mistake(
+                _camera_mistake(data, "Rt"),
+                "those are the beacon's body coordinates (nose, left wing, fin); the "
+                "camera's axes differ from the body's by the mounting ᴮR_C",
+            ),
+            Mistake(
+                _camera_mistake(data, "M Rt"),
+                "the body coordinates are right, but the mounting ᴮR_C turns camera into "
+                "body coordinates; body → camera is its transpose",
+            ),
+        ),
+    )
 
 
 EXERCISES = [
@@ -171,34 +229,9 @@ EXERCISES = [
     Exercise(
         id="04.3",
         level="extend",
-        judge=ArrayJudge(
-            _camera_reference(),
-            what="the beacon in camera coordinates",
-            tol=1e-9,
-            mistakes=(
-                Mistake(
-                    _camera_mistake("Rt Mt"),
-                    "the two inverses are in the wrong order: camera → world is ᵂR_B ᴮR_C (the "
-                    "inner frames cancel), so world → camera is its transpose, (ᴮR_C)ᵀ (ᵂR_B)ᵀ: "
-                    "undo the attitude first, then the mounting",
-                ),
-                Mistake(
-                    _camera_mistake("R M"),
-                    "that goes the other way, from camera coordinates to the world; the "
-                    "question starts in the world, so both matrices must be undone",
-                ),
-                Mistake(
-                    _camera_mistake("Rt"),
-                    "those are the beacon's body coordinates (nose, left wing, fin); the "
-                    "camera's axes differ from the body's by the mounting ᴮR_C",
-                ),
-                Mistake(
-                    _camera_mistake("M Rt"),
-                    "the body coordinates are right, but the mounting ᴮR_C turns camera into "
-                    "body coordinates; body → camera is its transpose",
-                ),
-            ),
-        ),
+        judge=_judge_camera(_camera_data()),
+        per_student=_some_camera_data,
+        judged=_judge_camera,
         given=_camera_data,
         examples=(
             Example("(W_R_B_ex3 @ B_R_C_ex3).T @ W_beacon", "correct"),

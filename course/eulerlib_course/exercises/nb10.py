@@ -31,13 +31,13 @@ _HALF_AXIS = np.array([-3.0, 4.0, 5.5]) / math.hypot(3.0, 4.0, 5.5)  # the unit 
 _SHORT_OF_HALF = 1e-7  # the turn is by π minus this, in radians
 
 
-def _near_half_turn() -> NDArray[np.float64]:
+def _near_half_turn(k: NDArray[np.float64] = _HALF_AXIS) -> NDArray[np.float64]:
     """R = cos θ I + sin θ [k]× + (1 − cos θ) k kᵀ for θ = π − d, each factor without loss."""
     d = _SHORT_OF_HALF
     cosine, sine, one_minus_cosine = -math.cos(d), math.sin(d), 1.0 + math.cos(d)
-    kx, ky, kz = _HALF_AXIS
+    kx, ky, kz = k
     cross = np.array([[0.0, -kz, ky], [kz, 0.0, -kx], [-ky, kx, 0.0]])
-    return cosine * np.eye(3) + sine * cross + one_minus_cosine * np.outer(_HALF_AXIS, _HALF_AXIS)
+    return cosine * np.eye(3) + sine * cross + one_minus_cosine * np.outer(k, k)
 
 
 def _skew_direction(R: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -46,8 +46,68 @@ def _skew_direction(R: NDArray[np.float64]) -> NDArray[np.float64]:
     return s / float(np.linalg.norm(s))
 
 
+def _axis_near_half_turn(R: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The unit axis of R, a turn close to π: the line from the symmetric part, the sign from s.
+
+    (R + Rᵀ)/2 = cos θ I + (1 − cos θ) k kᵀ with cos θ = (tr R − 1)/2; near a half turn
+    1 − cos θ is close to 2, so k kᵀ keeps every digit. Its largest diagonal entry gives the
+    column that holds k best; the skew part s = 2 sin θ k is tiny but still has k's sign.
+    """
+    cosine = (float(np.trace(R)) - 1.0) / 2.0
+    outer = ((R + R.T) / 2.0 - cosine * np.eye(3)) / (1.0 - cosine)
+    j = int(np.argmax(np.diag(outer)))
+    k: NDArray[np.float64] = outer[:, j] / math.sqrt(float(outer[j, j]))
+    s = np.array([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]])
+    return k if float(s @ k) >= 0.0 else -k
+
+
 _R_NEAR = _near_half_turn()
-_FROM_SKEW = _skew_direction(_R_NEAR)
+
+
+def _some_near_half_turn(rng: np.random.Generator) -> NDArray[np.float64]:
+    """A student's R_near: a turn by π − 1e-7 about a random unit axis, drawn again while the
+    skew part alone happens to give the axis to within 1e-10 (then that mistake would pass)."""
+    while True:
+        axis = rng.normal(size=3)
+        R = _near_half_turn(axis / float(np.linalg.norm(axis)))
+        if np.max(np.abs(_skew_direction(R) - _axis_near_half_turn(R))) > 1e-10:
+            return R
+
+
+def _judge_half_turn(R: NDArray[np.float64]) -> ArrayJudge:
+    """The judge of 10.3: the unit axis of R, to 12 digits."""
+    axis, from_skew = _axis_near_half_turn(R), _skew_direction(R)
+    return ArrayJudge(
+        axis,
+        what="your axis",
+        tol=1e-12,
+        mistakes=(
+            Mistake(
+                -axis,
+                "that is the right line but the wrong direction: the symmetric part gives k "
+                "only up to its sign; choose the sign for which the axis points along "
+                "s = (r32 − r23, r13 − r31, r21 − r12)",
+            ),
+            Mistake(
+                from_skew,
+                "that is s / |s|, read from the skew part alone: this close to a half turn s "
+                "is tiny and the rounding of the entries is a large part of it, so only "
+                "about half of the digits are right. Take the line from the symmetric part "
+                "(R + Rᵀ)/2 and only the sign from s",
+            ),
+            Mistake(
+                -from_skew,
+                "that comes from the skew part alone, with the sign reversed: near a half "
+                "turn s keeps only about half of the digits. Take the line from the "
+                "symmetric part (R + Rᵀ)/2 and only the sign from s",
+            ),
+            Mistake(
+                matrix_to_rotvec(R),
+                "that is the rotation vector, the axis times the angle; the question asks "
+                "for the unit axis",
+            ),
+        ),
+    )
 
 
 def _some_turn(rng: np.random.Generator) -> NDArray[np.float64]:
@@ -176,37 +236,9 @@ EXERCISES = [
     Exercise(
         id="10.3",
         level="extend",
-        judge=ArrayJudge(
-            _HALF_AXIS,
-            what="your axis",
-            tol=1e-12,
-            mistakes=(
-                Mistake(
-                    -_HALF_AXIS,
-                    "that is the right line but the wrong direction: the symmetric part gives k "
-                    "only up to its sign; choose the sign for which the axis points along "
-                    "s = (r32 − r23, r13 − r31, r21 − r12)",
-                ),
-                Mistake(
-                    _FROM_SKEW,
-                    "that is s / |s|, read from the skew part alone: this close to a half turn s "
-                    "is tiny and the rounding of the entries is a large part of it, so only "
-                    "about half of the digits are right. Take the line from the symmetric part "
-                    "(R + Rᵀ)/2 and only the sign from s",
-                ),
-                Mistake(
-                    -_FROM_SKEW,
-                    "that comes from the skew part alone, with the sign reversed: near a half "
-                    "turn s keeps only about half of the digits. Take the line from the "
-                    "symmetric part (R + Rᵀ)/2 and only the sign from s",
-                ),
-                Mistake(
-                    matrix_to_rotvec(_R_NEAR),
-                    "that is the rotation vector, the axis times the angle; the question asks "
-                    "for the unit axis",
-                ),
-            ),
-        ),
+        judge=_judge_half_turn(_R_NEAR),
+        per_student=_some_near_half_turn,
+        judged=_judge_half_turn,
         given=lambda: _R_NEAR.copy(),
         examples=(
             Example("eulerlib.matrix_to_axis_angle(R_near).axis", "correct"),

@@ -42,8 +42,58 @@ _SUM = np.array([math.sqrt(0.5), math.sqrt(0.5), 0.0, 2 * math.sqrt(0.5)])  # q_
 
 _LOCKED = [37.0, 90.0, -71.0]  # yaw, pitch, roll of the quaternion the learner is given
 _Q_LOCK = euler_to_quaternion(_LOCKED, "rose", degrees=True)
-# roll − yaw = 2 atan2(x, w); read scalar first, "w" is x and "x" is y
-_ROLL_MINUS_YAW_SCALAR_FIRST = math.degrees(2 * math.atan2(_Q_LOCK[1], _Q_LOCK[0]))
+
+
+def _some_lock(rng: np.random.Generator) -> NDArray[np.float64]:
+    """A student's q_lock: pitch +90°, yaw and roll in whole degrees, drawn again until
+    roll − yaw is at least 15° from every multiple of 90° (where the answer would meet its own
+    negative, its half or the scalar-first reading) and is not the teacher's."""
+    teacher = (_LOCKED[2] - _LOCKED[0]) % 360.0
+    while True:
+        yaw, roll = (float(a) for a in rng.integers(-170, 171, 2))
+        difference = (roll - yaw) % 360.0
+        if 15.0 <= difference % 90.0 <= 75.0 and difference != teacher:
+            return euler_to_quaternion([yaw, 90.0, roll], "rose", degrees=True)
+
+
+def _judge_lock(q: NDArray[np.float64], roll_plus_yaw: float | None = None) -> NumberJudge:
+    """The judge of 11.3: roll − yaw read from q (scalar last) at pitch +90°.
+
+    There q = (sin δ, cos δ, −sin δ, cos δ)/√2 with δ = (roll − yaw)/2, so roll − yaw is
+    2 atan2(x, w). ``roll_plus_yaw``, known only for the teacher's data (the angles it is made
+    from; a quaternion at the lock keeps no trace of it), adds the diagnosis of that sum.
+    """
+    x, w = float(q[0]), float(q[3])
+    mistakes = [
+        Mistake(
+            # read scalar first, "w" is x and "x" is y
+            math.degrees(2 * math.atan2(float(q[1]), float(q[0]))),
+            "that comes from q read scalar first, (w, x, y, z); eulerlib and SciPy store "
+            "it scalar last, (x, y, z, w), so w is q_lock[3]",
+        ),
+        Mistake(
+            math.degrees(math.atan2(x, w)),
+            "that is δ = (roll − yaw)/2, the half angle inside the quaternion: double it",
+        ),
+    ]
+    if roll_plus_yaw is not None:
+        mistakes.insert(
+            1,
+            Mistake(
+                roll_plus_yaw,
+                "roll + yaw is what is left at pitch −90°; at +90° the quaternion depends on "
+                "roll − yaw",
+            ),
+        )
+    return NumberJudge(
+        math.degrees(2 * math.atan2(x, w)),
+        what="your roll − yaw",
+        tol=1e-6,
+        unit="deg",
+        modulo=360.0,
+        mistakes=tuple(mistakes),
+    )
+
 
 # --- 11.4: a camera's orientation in JPL's convention, composed with the body's attitude ---------
 
@@ -239,29 +289,9 @@ EXERCISES = [
     Exercise(
         id="11.3",
         level="extend",
-        judge=NumberJudge(
-            _LOCKED[2] - _LOCKED[0],
-            what="your roll − yaw",
-            tol=1e-6,
-            unit="deg",
-            modulo=360.0,
-            mistakes=(
-                Mistake(
-                    _ROLL_MINUS_YAW_SCALAR_FIRST,
-                    "that comes from q read scalar first, (w, x, y, z); eulerlib and SciPy store "
-                    "it scalar last, (x, y, z, w), so w is q_lock[3]",
-                ),
-                Mistake(
-                    _LOCKED[2] + _LOCKED[0],
-                    "roll + yaw is what is left at pitch −90°; at +90° the quaternion depends on "
-                    "roll − yaw",
-                ),
-                Mistake(
-                    (_LOCKED[2] - _LOCKED[0]) / 2,
-                    "that is δ = (roll − yaw)/2, the half angle inside the quaternion: double it",
-                ),
-            ),
-        ),
+        judge=_judge_lock(_Q_LOCK, roll_plus_yaw=_LOCKED[2] + _LOCKED[0]),
+        per_student=_some_lock,
+        judged=_judge_lock,
         given=lambda: _Q_LOCK.copy(),
         examples=(
             Example(

@@ -22,6 +22,7 @@ from eulerlib import (
     euler_to_matrix,
     euler_to_quaternion,
     matrix_to_axis_angle,
+    matrix_to_euler,
     matrix_to_quaternion,
     quaternion_conjugate,
     quaternion_exp,
@@ -46,17 +47,78 @@ _START = [-35.0, 20.0, 15.0]  # yaw, pitch, roll of R0 (Rose's ZYX, degrees)
 _END = [70.0, -25.0, 110.0]  # ... and of R1
 _Q_START = euler_to_quaternion(_START, "rose", degrees=True)
 _Q_END = euler_to_quaternion(_END, "rose", degrees=True)
-if _Q_START @ _Q_END < 0:  # the short way
-    _Q_END = -_Q_END
 _R_START = quaternion_to_matrix(_Q_START)
 _R_END = quaternion_to_matrix(_Q_END)
 _FRACTION = 0.3
+_MatrixPair = tuple[NDArray[np.float64], NDArray[np.float64]]
 
 
-def _turned_on_the_left(fraction: float) -> NDArray[np.float64]:
-    """Rot(n, t θ) R0 with (n, θ) of R0ᵀ R1: the body-frame turn applied about the fixed axes."""
-    axis, angle = matrix_to_axis_angle(_R_START.T @ _R_END)
-    return axis_angle_to_matrix(axis, fraction * angle) @ _R_START
+def _short_way(pair: _MatrixPair) -> _MatrixPair:
+    """The quaternions of R0 and R1, the sign of q1 chosen so that q0 · q1 ≥ 0 (the short way)."""
+    q0, q1 = (matrix_to_quaternion(np.asarray(R, dtype=np.float64)) for R in pair)
+    return q0, (q1 if float(q0 @ q1) >= 0.0 else -q1)
+
+
+def _judge_fraction(pair: _MatrixPair) -> ArrayJudge:
+    """The judge of 12.1: the attitude 30 % of the way along slerp from R0 to R1."""
+    R0, R1 = (np.asarray(R, dtype=np.float64) for R in pair)
+    q0, q1 = _short_way((R0, R1))
+    t = _FRACTION
+    # what the learner's Euler-angle interpolation starts from: the angles the library reads
+    angles0, angles1 = (matrix_to_euler(R, "rose", degrees=True) for R in (R0, R1))
+    axis, angle = matrix_to_axis_angle(R0.T @ R1)
+    return ArrayJudge(
+        quaternion_to_matrix(_shoemake(q0, q1, t)),
+        what="your matrix",
+        rotation=True,
+        mistakes=(
+            Mistake(
+                quaternion_to_matrix(_shoemake(q0, q1, 1 - t)),
+                "that is 70 % of the way from R0, or 30 % from R1's end: slerp(R0, R1, t) "
+                "starts at R0 when t = 0",
+            ),
+            Mistake(
+                euler_to_matrix((1 - t) * angles0 + t * angles1, "rose", degrees=True),
+                "that is 30 % of the way from R0's yaw, pitch and roll to R1's: interpolating "
+                "Euler angles follows another path; the question asks for slerp",
+            ),
+            Mistake(
+                (1 - t) * R0 + t * R1,
+                "interpolating the entries of the matrices leaves the rotations: that matrix "
+                "is not orthogonal. Turn from R0 toward R1 about the axis of R0ᵀ R1 instead",
+            ),
+            Mistake(
+                # the body-frame turn applied about the fixed axes
+                axis_angle_to_matrix(axis, t * angle) @ R0,
+                "the turn R0ᵀ R1 is about an axis of the body, so it multiplies R0 on the "
+                "right: R0 Rot(n, t θ), not Rot(n, t θ) R0",
+            ),
+        ),
+    )
+
+
+def _some_two_attitudes(rng: np.random.Generator) -> _MatrixPair:
+    """A student's R0 and R1: whole-degree Rose angles, pitch within ±60° (away from the lock),
+    40° to 150° apart, drawn again until the answer and every diagnosed mistake are at least
+    0.05 apart (largest entry), so that each mistake is told from the answer and the others."""
+    while True:
+        low, high = [-170, -60, -170], [171, 61, 171]
+        R0, R1 = (
+            euler_to_matrix(rng.integers(low, high).astype(float), "rose", degrees=True)
+            for _ in range(2)
+        )
+        cosine = (float(np.trace(R0.T @ R1)) - 1.0) / 2.0
+        if not math.cos(math.radians(150.0)) <= cosine <= math.cos(math.radians(40.0)):
+            continue
+        judge = _judge_fraction((R0, R1))
+        points = [np.asarray(judge.reference), *(np.asarray(m.value) for m in judge.mistakes)]
+        points.append(points[0].T)
+        if all(
+            np.max(np.abs(points[i] - points[j])) >= 0.05
+            for i in range(len(points))
+            for j in range(i + 1, len(points))
+        ):
+            return R0, R1
 
 
 # --- 12.3: the short way between q0 and q1 -------------------------------------------------------
@@ -197,37 +259,9 @@ EXERCISES = [
     Exercise(
         id="12.1",
         level="apply",
-        judge=ArrayJudge(
-            quaternion_to_matrix(_shoemake(_Q_START, _Q_END, _FRACTION)),
-            what="your matrix",
-            rotation=True,
-            mistakes=(
-                Mistake(
-                    quaternion_to_matrix(_shoemake(_Q_START, _Q_END, 1 - _FRACTION)),
-                    "that is 70 % of the way from R0, or 30 % from R1's end: slerp(R0, R1, t) "
-                    "starts at R0 when t = 0",
-                ),
-                Mistake(
-                    euler_to_matrix(
-                        (1 - _FRACTION) * np.array(_START) + _FRACTION * np.array(_END),
-                        "rose",
-                        degrees=True,
-                    ),
-                    "that is 30 % of the way from R0's yaw, pitch and roll to R1's: interpolating "
-                    "Euler angles follows another path; the question asks for slerp",
-                ),
-                Mistake(
-                    (1 - _FRACTION) * _R_START + _FRACTION * _R_END,
-                    "interpolating the entries of the matrices leaves the rotations: that matrix "
-                    "is not orthogonal. Turn from R0 toward R1 about the axis of R0ᵀ R1 instead",
-                ),
-                Mistake(
-                    _turned_on_the_left(_FRACTION),
-                    "the turn R0ᵀ R1 is about an axis of the body, so it multiplies R0 on the "
-                    "right: R0 Rot(n, t θ), not Rot(n, t θ) R0",
-                ),
-            ),
-        ),
+        judge=_judge_fraction((_R_START, _R_END)),
+        per_student=_some_two_attitudes,
+        judged=_judge_fraction,
         given=lambda: (_R_START.copy(), _R_END.copy()),
         examples=(
             Example("eulerlib.slerp(R0_ex, R1_ex, 0.3)", "correct"),

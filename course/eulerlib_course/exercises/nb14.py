@@ -10,6 +10,7 @@ here from stated attitudes and rates, not taken from the recording, so that the 
 from __future__ import annotations
 
 import numpy as np
+from numpy.typing import NDArray
 
 from eulerlib import euler_to_matrix, matrix_to_quaternion, quaternion_to_matrix, rotvec_to_matrix
 
@@ -24,6 +25,55 @@ _DOWN_YPR = (40.0, -90.0, 10.0)  # 14.2: yaw, pitch, roll of an attitude at pitc
 _M1 = euler_to_matrix([-150.0, 20.0, 35.0], "rose", degrees=True)  # sensor → earth
 _Q1 = matrix_to_quaternion(_M1.T, scalar_first=True)  # as the device stores it: R(q) = Mᵀ
 
+
+def _judge_device_quaternion(q: NDArray[np.float64]) -> ArrayJudge:
+    """The judge of 14.1: M = R(q)ᵀ, q read scalar first as the device writes it."""
+    q = np.asarray(q, dtype=np.float64)
+    seen = quaternion_to_matrix(q, scalar_first=True)  # R(q): the earth's axes in sensor axes
+    misread = quaternion_to_matrix(q)  # the same four numbers read scalar last
+    return ArrayJudge(
+        seen.T,
+        what="your attitude matrix",
+        rotation=True,
+        mistakes=(
+            Mistake(
+                seen,
+                "this is R(q): the earth's axes in sensor coordinates. The device's "
+                "attitude, which turns sensor coordinates into earth coordinates, is its "
+                "transpose",
+            ),
+            Mistake(
+                misread,
+                "you read the quaternion as scalar last (x, y, z, w); this device writes the "
+                "scalar first (w, x, y, z)",
+            ),
+            Mistake(
+                misread.T,
+                "you read the quaternion as scalar last (x, y, z, w); this device writes the "
+                "scalar first (w, x, y, z)",
+            ),
+        ),
+    )
+
+
+def _some_device_quaternion(rng: np.random.Generator) -> NDArray[np.float64]:
+    """A student's q_ex: the device's quaternion of an attitude of whole-degree Rose angles
+    (pitch within ±60°), drawn again until the answer and every diagnosed mistake are at least
+    0.05 apart (largest entry), so that each is told from the others."""
+    while True:
+        angles = rng.integers([-170, -60, -170], [171, 61, 171]).astype(float)
+        M = euler_to_matrix(angles, "rose", degrees=True)
+        q = matrix_to_quaternion(M.T, scalar_first=True)
+        judge = _judge_device_quaternion(q)
+        points = [np.asarray(judge.reference), *(np.asarray(m.value) for m in judge.mistakes)]
+        if all(
+            np.max(np.abs(points[i] - points[j])) >= 0.05
+            for i in range(len(points))
+            for j in range(i + 1, len(points))
+        ):
+            return q
+
+
 # --- 14.3: from two consecutive attitudes back to the gyroscope's reading -----------------------
 
 _OMEGA = np.array([120.0, -45.0, 300.0])  # °/s about the sensor's axes
@@ -37,29 +87,9 @@ EXERCISES = [
     Exercise(
         id="14.1",
         level="apply",
-        judge=ArrayJudge(
-            _M1,
-            what="your attitude matrix",
-            rotation=True,
-            mistakes=(
-                Mistake(
-                    _M1.T,
-                    "this is R(q): the earth's axes in sensor coordinates. The device's "
-                    "attitude, which turns sensor coordinates into earth coordinates, is its "
-                    "transpose",
-                ),
-                Mistake(
-                    quaternion_to_matrix(_Q1),
-                    "you read the quaternion as scalar last (x, y, z, w); this device writes the "
-                    "scalar first (w, x, y, z)",
-                ),
-                Mistake(
-                    quaternion_to_matrix(_Q1).T,
-                    "you read the quaternion as scalar last (x, y, z, w); this device writes the "
-                    "scalar first (w, x, y, z)",
-                ),
-            ),
-        ),
+        judge=_judge_device_quaternion(_Q1),
+        per_student=_some_device_quaternion,
+        judged=_judge_device_quaternion,
         given=lambda: _Q1.copy(),
         examples=(
             Example("quaternion_to_matrix(q_ex, scalar_first=True).T", "correct"),
