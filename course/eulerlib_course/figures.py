@@ -47,6 +47,7 @@ from eulerlib.observations import align_vectors
 from eulerlib.plotting import (
     AXIS_COLORS,
     HIGHLIGHT_COLOR,
+    RING_COLORS,
     aircraft_segments,
     animate_gimbal_lock,
     draw_aircraft,
@@ -258,12 +259,14 @@ def _numerical_robustness() -> Figure:
     error_ours = np.maximum(np.abs(ours - pitch).max(axis=0), floor)
     error_textbook = np.maximum(np.abs(textbook - pitch).max(axis=0), floor)
     fig, ax = plt.subplots(figsize=(6, 3.8), layout="constrained")
-    ax.loglog(distance, error_textbook, "o-", color="#D55E00", markersize=3, label="asin(−r31)")
+    ax.loglog(
+        distance, error_textbook, "o-", color=AXIS_COLORS[0], markersize=3, label="asin(−r31)"
+    )
     ax.loglog(
         distance,
         error_ours,
         "s-",
-        color="#0072B2",
+        color=AXIS_COLORS[2],
         markersize=3,
         label="eulerlib (exact: 0, drawn on the floor)",
     )
@@ -289,7 +292,7 @@ def _axis_and_angle() -> Figure:
     draw_frame(ax, R, label_suffix="'")
     ax.plot(*np.outer([-1.15, 1.15], axis).T, color="gold", linewidth=5, alpha=0.7)
     ax.text(*(1.2 * axis), "k", color="darkgoldenrod", fontsize=11)
-    for letter, color in zip("xyz", ("#D55E00", "#009E73", "#0072B2"), strict=True):
+    for letter, color in zip("xyz", AXIS_COLORS, strict=True):
         draw_axis_path(ax, turning, axis=letter, color=color, linewidth=1.0, alpha=0.8)
     return fig
 
@@ -304,8 +307,8 @@ def _quaternions() -> Figure:
     half = np.radians(turn) / 2
     q = q * np.sign(q[:, 0] * np.cos(half) + q[:, 3] * np.sin(half))[:, None]
     fig, ax = plt.subplots(figsize=(6, 3.6), layout="constrained")
-    ax.plot(turn, q[:, 0], color="#0072B2", linewidth=2, label="w of q")
-    ax.plot(turn, q[:, 3], color="#E69F00", linewidth=2, label="z of q")
+    ax.plot(turn, q[:, 0], color=AXIS_COLORS[2], linewidth=2, label="w of q")
+    ax.plot(turn, q[:, 3], color=RING_COLORS[1], linewidth=2, label="z of q")
     r11 = rot_z(turn, degrees=True)[:, 0, 0]
     ax.plot(turn, r11, color="0.3", linestyle="--", label="r11 of R")
     ax.axvline(360.0, color="0.6", linewidth=1)
@@ -364,11 +367,13 @@ def _angular_velocity_and_euler_rates() -> Figure:
     matrix_error = angle_between(np.array(R), truth, degrees=True)
     pitch = np.degrees(matrix_to_euler(truth, warn=False)[:, 1])
     fig, ax = plt.subplots(figsize=(6, 3.6), layout="constrained")
-    ax.semilogy(times, np.maximum(euler_error, floor), color="#D55E00", label="Euler rates, RK4")
+    ax.semilogy(
+        times, np.maximum(euler_error, floor), color=AXIS_COLORS[0], label="Euler rates, RK4"
+    )
     ax.semilogy(
         times,
         np.maximum(matrix_error, floor),
-        color="#0072B2",
+        color=AXIS_COLORS[2],
         label="matrix, exact (rounding only, below 1e-12°)",
     )
     ax.axvline(times[np.argmax(pitch)], color="0.5", linestyle=":", linewidth=1)
@@ -377,8 +382,8 @@ def _angular_velocity_and_euler_rates() -> Figure:
     ax.set_ylim(floor / 3, 1e4)
     ax.grid(alpha=0.3, which="major")
     right = ax.twinx()
-    right.plot(times, pitch, color="#009E73", linestyle=":", label="pitch")
-    right.set_ylabel("pitch, degrees", color="#009E73")
+    right.plot(times, pitch, color=AXIS_COLORS[1], linestyle=":", label="pitch")
+    right.set_ylabel("pitch, degrees", color=AXIS_COLORS[1])
     right.set_ylim(0, 100)
     ax.set_title("a steady turn integrated with a fixed step", fontsize=10)
     ax.legend(fontsize=8, loc="upper left")
@@ -395,8 +400,8 @@ def _a_real_imu_recording() -> Figure:
     path = start @ rotvec_to_matrix(np.radians([20.0, 40.0, 10.0]) * times[:, None])
     yaw, _, roll = np.degrees(matrix_to_euler(path, "ZYX", warn=False)).T
     fig, ax = plt.subplots(figsize=(6, 3.6), layout="constrained")
-    ax.plot(times, np.unwrap(yaw, period=360), color="#0072B2", linewidth=2, label="yaw")
-    ax.plot(times, np.unwrap(roll, period=360), color="#D55E00", linestyle="--", label="roll")
+    ax.plot(times, np.unwrap(yaw, period=360), color=AXIS_COLORS[2], linewidth=2, label="yaw")
+    ax.plot(times, np.unwrap(roll, period=360), color=AXIS_COLORS[0], linestyle="--", label="roll")
     difference = (roll - yaw + 180.0) % 360.0 - 180.0
     ax.plot(times, difference, color="black", linewidth=2.5, label="roll − yaw")
     ax.set_xlabel("time, s")
@@ -466,11 +471,13 @@ def _fusing_gyroscope_gravity_and_field() -> Figure:
     ax.plot(
         times,
         _plotted(integrated, 4),
-        color="#D55E00",
+        color=AXIS_COLORS[0],
         linewidth=1.8,
         label="gyroscope: smooth, drifts",
     )
-    ax.plot(times, _plotted(fused, 4), color="#0072B2", linewidth=2.2, label="complementary filter")
+    ax.plot(
+        times, _plotted(fused, 4), color=AXIS_COLORS[2], linewidth=2.2, label="complementary filter"
+    )
     ax.plot(times, _plotted(truth, 4), "k:", linewidth=1.2, label="true tilt")
     ax.set_xlabel("time, s")
     ax.set_ylabel("tilt, degrees")
@@ -488,9 +495,15 @@ def _random_and_average_rotations() -> Figure:
     z = np.linspace(-0.995, 0.995, 399)
     euler = 1.0 / (np.pi * np.sqrt(1.0 - z**2))  # pitch uniform: z = −sin(pitch)
     fig, ax = plt.subplots(figsize=(6, 3.6), layout="constrained")
-    ax.plot(z, _plotted(euler, 5), color="#D55E00", linewidth=2.2, label="yaw, pitch, roll uniform")
     ax.plot(
-        z, np.full_like(z, 0.5), color="#009E73", linewidth=2.2, label="uniform rotations (Haar)"
+        z, _plotted(euler, 5), color=AXIS_COLORS[0], linewidth=2.2, label="yaw, pitch, roll uniform"
+    )
+    ax.plot(
+        z,
+        np.full_like(z, 0.5),
+        color=AXIS_COLORS[1],
+        linewidth=2.2,
+        label="uniform rotations (Haar)",
     )
     ax.set_xlabel("height of the nose (−1: straight down, 1: straight up)")
     ax.set_ylabel("density")

@@ -217,6 +217,7 @@ def frame_artists(
     colors: Sequence[Any] = AXIS_COLORS,
     labels: Sequence[str] = AXIS_LETTERS,
     label_suffix: str = "",
+    fontsize: float = 10.0,
 ) -> list[Any]:
     """Body of :func:`draw_frame` for checked arguments (the plotting modules call it)."""
     start = np.zeros(3) if origin is None else origin
@@ -246,7 +247,7 @@ def frame_artists(
             alpha=alpha,
             ha="center",
             va="center",
-            fontsize=10,
+            fontsize=fontsize,
         )
         artists.extend([shaft, head, text])
     return artists

@@ -229,9 +229,7 @@ def _draw_gimbal(ax: Axes3D, values: NDArray[np.float64], convention: Convention
             linestyle="-.",
             linewidth=1.2,
         )
-    for artist in frame_artists(ax, frames[2], scale=0.45, linewidth=1.5):
-        if hasattr(artist, "set_fontsize"):
-            artist.set_fontsize(8)
+    frame_artists(ax, frames[2], scale=0.45, linewidth=1.5, fontsize=8.0)
     ax.set_xticklabels([])
     ax.set_yticklabels([])
     ax.set_zticklabels([])
