@@ -11,6 +11,7 @@ from eulerlib import elementary_rotation, euler_to_matrix
 
 from .judges import ArrayJudge, Mistake
 from .key import Example, Exercise
+from .seeds import signed_degrees
 
 
 def _turn(axis: str, angle: float, degrees: bool = True) -> NDArray[np.float64]:
@@ -33,8 +34,8 @@ def _mixed_angles() -> NDArray[np.float64]:
 def _some_mixed_angles(rng: np.random.Generator) -> NDArray[np.float64]:
     """A student's ψ, θ, φ in whole degrees, each at least 15° from 0 (so that every mistake
     below gives another matrix), the pitch within ±60°."""
-    yaw, roll = (float(rng.choice([-1, 1]) * rng.integers(15, 151)) for _ in range(2))
-    pitch = float(rng.choice([-1, 1]) * rng.integers(15, 61))
+    yaw, roll = (signed_degrees(rng, 15, 150) for _ in range(2))
+    pitch = signed_degrees(rng, 15, 60)
     return np.array([yaw, pitch, roll])
 
 
@@ -132,8 +133,8 @@ def _some_attitude(rng: np.random.Generator) -> NDArray[np.float64]:
     column) and the second row are each at least 20° from the fixed y axis and from each other,
     so that every mistake of the judge is another matrix than the answer and than each other."""
     while True:
-        yaw, roll = (float(rng.choice([-1, 1]) * rng.integers(15, 151)) for _ in range(2))
-        pitch = float(rng.choice([-1, 1]) * rng.integers(15, 61))
+        yaw, roll = (signed_degrees(rng, 15, 150) for _ in range(2))
+        pitch = signed_degrees(rng, 15, 60)
         A = euler_to_matrix([yaw, pitch, roll], "ZYX", degrees=True)
         axes = (A[:, 1], A[1, :], np.array([0.0, 1.0, 0.0]))
         if all(

@@ -13,6 +13,7 @@ from eulerlib import elementary_rotation, euler_to_matrix
 
 from .judges import ArrayJudge, ChoiceJudge, ExpressionJudge, Mistake, rounded_to
 from .key import Example, Exercise
+from .seeds import signed_degrees
 
 
 class _Later:
@@ -74,10 +75,10 @@ def _some_hab(rng: np.random.Generator) -> NDArray[np.float64]:
     (so that swapping them is another matrix), attitude 15° to 70° either way (away from the
     poles)."""
     while True:
-        heading, bank = (float(rng.choice([-1, 1]) * rng.integers(20, 171)) for _ in range(2))
+        heading, bank = (signed_degrees(rng, 20, 170) for _ in range(2))
         if abs(heading - bank) >= 10.0:
             break
-    attitude = float(rng.choice([-1, 1]) * rng.integers(15, 71))
+    attitude = signed_degrees(rng, 15, 70)
     return np.array([heading, attitude, bank])
 
 

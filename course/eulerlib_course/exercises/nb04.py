@@ -9,6 +9,7 @@ from eulerlib import euler_to_matrix
 
 from .judges import ArrayJudge, Mistake
 from .key import Example, Exercise
+from .seeds import signed_degrees
 
 # 04.1: an aircraft's attitude W_R_B; a light on its wing tip, given in body coordinates, is
 # asked for in world coordinates, and a landmark given in world coordinates in body coordinates
@@ -23,8 +24,8 @@ def _attitude_04_1() -> NDArray[np.float64]:
 
 def _some_attitude(rng: np.random.Generator) -> NDArray[np.float64]:
     """A student's W_R_B: yaw and roll in whole degrees, at least 10° from 0, pitch within ±60°."""
-    yaw, roll = (float(rng.choice([-1, 1]) * rng.integers(10, 171)) for _ in range(2))
-    pitch = float(rng.choice([-1, 1]) * rng.integers(10, 61))
+    yaw, roll = (signed_degrees(rng, 10, 170) for _ in range(2))
+    pitch = signed_degrees(rng, 10, 60)
     return euler_to_matrix([yaw, pitch, roll], "rose", degrees=True)
 
 
@@ -99,8 +100,8 @@ def _some_camera_data(rng: np.random.Generator) -> _CameraData:
     of the judge lands at least 5 m from the answer and from each other mistake.
     """
     while True:
-        yaw, roll = (float(rng.choice([-1, 1]) * rng.integers(10, 171)) for _ in range(2))
-        pitch = float(rng.choice([-1, 1]) * rng.integers(5, 46))
+        yaw, roll = (signed_degrees(rng, 10, 170) for _ in range(2))
+        pitch = signed_degrees(rng, 5, 45)
         R = euler_to_matrix([yaw, pitch, roll], "rose", degrees=True)
         beacon = rng.integers(-150, 151, 3).astype(np.float64)
         data = (R, _CAMERA_MOUNT.copy(), beacon)

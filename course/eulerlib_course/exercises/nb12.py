@@ -33,6 +33,7 @@ from eulerlib import (
 
 from .judges import ArrayJudge, Mistake, NumberJudge, QuaternionJudge
 from .key import Example, Exercise
+from .seeds import whole_degree_angles
 
 
 def _shoemake(q0: NDArray[np.float64], q1: NDArray[np.float64], t: float) -> NDArray[np.float64]:
@@ -205,7 +206,7 @@ def _some_keys(rng: np.random.Generator) -> _KeyTriple:
     """A student's three keys: whole-degree Rose angles, 40° to 120° from key to key, with the
     control attitude at least 10° from the middle key, so that every mistake is told apart."""
     while True:
-        middle = rng.integers([-170, -60, -170], [171, 61, 171]).astype(float)
+        middle = whole_degree_angles(rng, 60)
         neighbours = [middle + rng.integers(-50, 51, size=3) for _ in range(2)]
         neighbours[0][1] = np.clip(neighbours[0][1], -80, 80)
         neighbours[1][1] = np.clip(neighbours[1][1], -80, 80)

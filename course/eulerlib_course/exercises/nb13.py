@@ -18,6 +18,7 @@ from eulerlib import euler_to_matrix
 
 from .judges import ArrayJudge, Mistake, NumberJudge
 from .key import Example, Exercise
+from .seeds import whole_degree_angles
 
 Array = NDArray[np.float64]
 
@@ -81,7 +82,7 @@ def _nearest(M: Array) -> Array:
 def _some_drifted(rng: np.random.Generator) -> Array:
     """A student's drifted matrix: a rotation of whole-degree Rose angles plus noise of size
     0.3e-3 to 1.6e-3 in every entry, of either sign, to four decimals (as the teacher's)."""
-    angles = rng.integers([-170, -80, -170], [171, 81, 171]).astype(float)
+    angles = whole_degree_angles(rng, 80)
     size = rng.integers(3, 17, (3, 3)) * 1e-4
     sign = rng.choice([-1.0, 1.0], (3, 3))
     drifted: Array = euler_to_matrix(angles, "rose", degrees=True) + sign * size
@@ -133,7 +134,7 @@ def _exp_skew(rotvec: Array) -> Array:
 def _some_step(rng: np.random.Generator) -> tuple[Array, Array, Array]:
     """A student's start attitude (whole-degree Rose angles), gyroscope rate (every component
     20 to 60 °/s, of either sign) and step (0.5, 1 or 1.5 s): a turn of 17° to 156°."""
-    angles = rng.integers([-170, -80, -170], [171, 81, 171]).astype(float)
+    angles = whole_degree_angles(rng, 80)
     rate = rng.integers(20, 61, 3) * rng.choice([-1.0, 1.0], 3)
     step = np.array(rng.choice([0.5, 1.0, 1.5]))  # an array, as all given data: a copy is fresh
     return euler_to_matrix(angles, "rose", degrees=True), rate.astype(float), step

@@ -16,6 +16,7 @@ from eulerlib import euler_to_matrix, matrix_to_quaternion, quaternion_to_matrix
 
 from .judges import ArrayJudge, ChoiceJudge, Mistake, NumberJudge, rounded_to
 from .key import Example, Exercise
+from .seeds import whole_degree_angles
 
 ATTITUDE_RATE = 128.0  # Hz, the device's quaternion, matrix and Euler-angle samples
 _DOWN_YPR = (40.0, -90.0, 10.0)  # 14.2: yaw, pitch, roll of an attitude at pitch −90°, degrees
@@ -61,7 +62,7 @@ def _some_device_quaternion(rng: np.random.Generator) -> NDArray[np.float64]:
     (pitch within ±60°), drawn again until the answer and every diagnosed mistake are at least
     0.05 apart (largest entry), so that each is told from the others."""
     while True:
-        angles = rng.integers([-170, -60, -170], [171, 61, 171]).astype(float)
+        angles = whole_degree_angles(rng, 60)
         M = euler_to_matrix(angles, "rose", degrees=True)
         q = matrix_to_quaternion(M.T, scalar_first=True)
         judge = _judge_device_quaternion(q)

@@ -31,8 +31,16 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
+from numpy.typing import NDArray
 
-__all__ = ["as_student", "current_student", "rng_for", "student_name"]
+__all__ = [
+    "as_student",
+    "current_student",
+    "rng_for",
+    "signed_degrees",
+    "student_name",
+    "whole_degree_angles",
+]
 
 #: The environment variable that names the student when no notebook cell does.
 ENVIRONMENT = "EULERLIB_STUDENT"
@@ -102,6 +110,30 @@ def rng_for(exercise: str, name: str) -> np.random.Generator:
     """
     digest = hashlib.sha256(f"eulerlib course · {exercise} · {name}".encode()).digest()
     return np.random.default_rng(int.from_bytes(digest[:16], "little"))
+
+
+def signed_degrees(rng: np.random.Generator, low: int, high: int) -> float:
+    """A whole number of degrees from ``low`` to ``high`` (both included), of either sign.
+
+    Examples
+    --------
+    >>> 15 <= abs(signed_degrees(np.random.default_rng(1), 15, 60)) <= 60
+    True
+    """
+    return float(rng.choice([-1, 1]) * rng.integers(low, high + 1))
+
+
+def whole_degree_angles(rng: np.random.Generator, pitch_limit: int) -> NDArray[np.float64]:
+    """Yaw, pitch, roll in whole degrees: yaw and roll within ±170°, pitch within ±``pitch_limit``.
+
+    Examples
+    --------
+    >>> angles = whole_degree_angles(np.random.default_rng(1), 60)
+    >>> bool(abs(angles[1]) <= 60 and np.all(angles == np.round(angles)))
+    True
+    """
+    limits = np.array([170, pitch_limit, 170])
+    return rng.integers(-limits, limits + 1).astype(np.float64)
 
 
 @contextlib.contextmanager
