@@ -54,7 +54,7 @@ from collections.abc import Iterator
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib import _scalar
+from eulerlib import _compiled, _scalar
 from eulerlib._blocks import block_slices
 from eulerlib._euler import entries_to_angles, entry_blocks_to_angles
 from eulerlib._length_kernels import out_of_range
@@ -206,6 +206,11 @@ def quaternion_to_matrix(q: ArrayLike, *, scalar_first: bool = False) -> NDArray
            [0., 0., 1.]])
     """
     first = check_flag(scalar_first, "scalar_first")
+    kernels, given = _compiled.rotations, _compiled.batch(q, (4,))
+    if kernels is not None and given is not None:  # one pass in C, or the paths below
+        out = np.empty((*given.shape[:-1], 3, 3))
+        if kernels.quaternions_to_matrices(out, given, first):
+            return out
     single = _one_quaternion_entries(q, first)
     if single is not None:
         return _scalar.as_array(single, (3, 3))
