@@ -3,7 +3,7 @@
 Run::
 
     python tests/benchmarks/bench_vs_scipy.py [--n 1000000] [--repeats 7] [--seq ZYX] [--only TEXT]
-                                              [--table batch|calls|both]
+                                              [--table batch|calls|both] [--numpy-only]
 
 It prints two tables. The **batch table** times ``--n`` rotations per call. The **one-call
 table** times calls on 1, 10, 100 and 10⁴ rotations (one rotation as a single ``(3,)``,
@@ -38,6 +38,10 @@ SciPy has no conversion between Euler-angle rates and angular velocity. Those ro
 against a plain NumPy baseline written here, loop-free: the Jacobian built with ``np.stack``
 from the three elementary rotations, applied with ``np.einsum`` and inverted with
 ``np.linalg.solve``. This file is a script, not a test: nothing here asserts a time.
+
+eulerlib is timed as installed: with its optional compiled kernels when they were built (the
+first line says which), or, with ``--numpy-only``, as if they had not been: run it both ways
+to see what the kernels buy.
 """
 
 from __future__ import annotations
@@ -57,6 +61,7 @@ import scipy
 from scipy.spatial.transform import Rotation, Slerp
 
 import eulerlib
+from eulerlib import _compiled
 
 try:  # the one-rotation baseline; the course's dev extra installs it
     import transforms3d
@@ -583,11 +588,20 @@ def main(argv: list[str] | None = None) -> None:
         default="both",
         help="the batch table (--n rotations), the one-call table (1 to 10⁴), or both",
     )
+    parser.add_argument(
+        "--numpy-only",
+        action="store_true",
+        help="time eulerlib as if its optional compiled kernels had not been built",
+    )
     args = parser.parse_args(argv)
     n, seq = args.n, args.seq
+    if args.numpy_only:
+        _compiled.euler = _compiled.rotations = _compiled.operations = None
+    built = all(kernels is not None for kernels in (_compiled.euler, _compiled.rotations))
     print(
         f"seq = {seq!r}, best of {args.repeats}; numpy {np.__version__}, "
-        f"scipy {scipy.__version__}, Python {platform.python_version()} on {platform.machine()}"
+        f"scipy {scipy.__version__}, Python {platform.python_version()} on {platform.machine()}; "
+        + ("eulerlib with its compiled kernels" if built else "eulerlib on numpy only")
     )
     if args.table in ("calls", "both"):
         one_call_table(seq, args.repeats, args.only)
