@@ -48,7 +48,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib import _scalar
+from eulerlib import _compiled, _scalar
 from eulerlib._blocks import block_slices
 from eulerlib._broadcast import broadcast_blocks, broadcast_shape
 from eulerlib._length_kernels import lengths
@@ -128,6 +128,30 @@ def _one_axis_angle(
     return (x / length, y / length, z / length), angle
 
 
+def _compiled_axis_angle(axis: object, angle: object, degrees: bool) -> NDArray[np.float64] | None:
+    """The matrices of :func:`axis_angle_to_matrix` from the compiled kernels (C, numpy's tan,
+    C), for float64 arrays whose shapes are equal or one of which is single; else None."""
+    kernels, axes = _compiled.rotations, _compiled.batch(axis, (3,))
+    if kernels is None or axes is None:
+        return None
+    angles = _compiled.batch(np.array(angle) if type(angle) is float else angle, ())
+    if angles is None:
+        return None
+    lead = axes.shape[:-1]
+    if angles.shape == lead or angles.ndim == 0:
+        shape = lead
+    elif not lead:
+        shape = angles.shape
+    else:
+        return None
+    half = np.empty(angles.shape)
+    if not kernels.half_angles(half, angles, degrees):
+        return None
+    np.tan(half, out=half)
+    out = np.empty((*shape, 3, 3))
+    return out if kernels.axis_angles_to_matrices(out, axes, angles, half, degrees) else None
+
+
 def axis_angle_to_matrix(
     axis: ArrayLike, angle: ArrayLike, *, degrees: bool = False
 ) -> NDArray[np.float64]:
@@ -175,6 +199,9 @@ def axis_angle_to_matrix(
     (5, 3, 3)
     """
     in_degrees = check_flag(degrees, "degrees")
+    compiled = _compiled_axis_angle(axis, angle, in_degrees)
+    if compiled is not None:
+        return compiled
     one_axis, one_angle = _scalar.vector(axis), _scalar.number(angle)
     if one_axis is not None and one_angle is not None:
         one_entries = axis_angle_to_entries(one_axis, one_angle, in_degrees)
@@ -333,6 +360,14 @@ def rotvec_to_matrix(v: ArrayLike, *, degrees: bool = False) -> NDArray[np.float
     not a number
     """
     in_degrees = check_flag(degrees, "degrees")
+    kernels, given = _compiled.rotations, _compiled.batch(v, (3,))
+    if kernels is not None and given is not None:  # C, numpy's tan, C; or the paths below
+        half = np.empty(given.shape[:-1])
+        if kernels.rotvec_half_angles(half, given, in_degrees):
+            np.tan(half, out=half)
+            out = np.empty((*given.shape[:-1], 3, 3))
+            if kernels.rotvecs_to_matrices(out, given, half, in_degrees):
+                return out
     single = _scalar.vector(v)
     entries = None if single is None else rotvec_to_entries(single, in_degrees)
     if entries is not None:  # None for the zero vector and lengths that need rescaling
