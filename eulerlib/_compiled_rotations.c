@@ -301,9 +301,36 @@ axis_angles_to_matrices(PyObject *module, PyObject *const *args, Py_ssize_t narg
     return PyBool_FromLong(ok);
 }
 
-/* The vector part of the canonical quaternion of a rotation matrix and its length
- * (_scalar_kernels.vector_part of entries_to_quaternion); 0 when the length needs rescaling. */
-static inline int
+/* The Euclidean length of a vector of three at any scale, as the array path's
+ * _length_kernels.lengths: sqrt of the sum of squares in order, or where that sum needs
+ * rescaling, the same for the vector scaled exactly by the power of two of its largest
+ * component, scaled back (the Python-float twins return None there instead). */
+static inline double
+scaled_length(const double *v)
+{
+    double squared = v[0] * v[0];
+    squared += v[1] * v[1];
+    squared += v[2] * v[2];
+    if (EULERLIB_SMALL <= squared && squared <= EULERLIB_LARGE) {
+        return sqrt(squared);
+    }
+    int exponent;
+    frexp(max2(max2(fabs(v[0]), fabs(v[1])), fabs(v[2])), &exponent);
+    double x = ldexp(v[0], -exponent), y = ldexp(v[1], -exponent), z = ldexp(v[2], -exponent);
+    squared = x * x;
+    squared += y * y;
+    squared += z * z;
+    return ldexp(sqrt(squared), exponent);
+}
+
+/* the smallest subnormal, which the array path divides by instead of a zero length
+ * (_length_kernels.TINY) */
+#define EULERLIB_TINY 0x1p-1074
+
+/* The vector part of the canonical quaternion of a rotation matrix (entries_to_quaternion)
+ * and what the array path divides it by: its length, or EULERLIB_TINY for a zero vector part
+ * (_quaternion_kernels.unit_axes and rotation_vectors); *length gets the length. */
+static inline double
 vector_part(const double *e, double *v, double *length)
 {
     double q[4];
@@ -311,16 +338,15 @@ vector_part(const double *e, double *v, double *length)
     v[0] = q[1];
     v[1] = q[2];
     v[2] = q[3];
-    double squared = squared_length(v, 3);
-    *length = sqrt(squared);
-    return squared >= 0.0;
+    *length = scaled_length(v);
+    return max2(*length, EULERLIB_TINY);
 }
 
 /* angle_arguments(yx, R, validate, atol) -> bool
- * Stage 1 of rotation_angle (_scalar_kernels.rotation_angle): for matrices (n, 3, 3), the
- * arguments of numpy's arctan2 as rows (2, n), y = |s| for the skew part s and x = trace − 1;
- * False when a matrix is not finite or, with validate, not a rotation within atol, or |s|²
- * needs rescaling. */
+ * Stage 1 of rotation_angle (_scalar_kernels.rotation_angle, and for |s| at any scale
+ * _quaternion_kernels.rotation_angles): for matrices (n, 3, 3), the arguments of numpy's
+ * arctan2 as rows (2, n), y = |s| for the skew part s and x = trace − 1; False when a matrix
+ * is not finite or, with validate, not a rotation within atol, or a sum overflows. */
 static PyObject *
 angle_arguments(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
@@ -345,22 +371,21 @@ angle_arguments(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     for (Py_ssize_t m = 0; ok && m < n; m++) {
         const double *e = entries + 9 * m;
         double s[3] = {e[7] - e[5], e[2] - e[6], e[3] - e[1]};
-        double squared = squared_length(s, 3);
-        ok = squared >= 0.0;
         double trace = e[0] + e[4];
         trace += e[8];
-        yx[m] = sqrt(squared);
+        yx[m] = scaled_length(s);
         yx[n + m] = trace - 1.0;
+        ok = all_finite(s, 3) && all_finite(yx + m, 1) && all_finite(yx + n + m, 1);
     }
     release_buffers(views, 2);
     return PyBool_FromLong(ok);
 }
 
 /* relative_angle_arguments(yx, R0, R1, validate, atol) -> bool
- * Stage 1 of angle_between (_scalar_kernels.relative_angle): for matrices R0 and R1, (n, 3, 3)
- * or one (1, 3, 3), the arguments of numpy's arctan2 for the angle of R0ᵀ R1 as rows (2, n);
- * False when a matrix is not finite or, with validate, not a rotation within atol, or the
- * squared length of the skew part needs rescaling. */
+ * Stage 1 of angle_between (_scalar_kernels.relative_angle, and for |s| at any scale
+ * _quaternion_kernels.relative_angles): for matrices R0 and R1, (n, 3, 3) or one (1, 3, 3),
+ * the arguments of numpy's arctan2 for the angle of R0ᵀ R1 as rows (2, n); False when a matrix
+ * is not finite or, with validate, not a rotation within atol, or a sum overflows. */
 static PyObject *
 relative_angle_arguments(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
@@ -399,19 +424,18 @@ relative_angle_arguments(PyObject *module, PyObject *const *args, Py_ssize_t nar
             skew[1] += q[2] * p[0] - q[0] * p[2];
             skew[2] += q[0] * p[1] - q[1] * p[0];
         }
-        double squared = squared_length(skew, 3);
-        ok = squared >= 0.0;
-        yx[m] = sqrt(squared);
+        yx[m] = scaled_length(skew);
         yx[n + m] = trace - 1.0;
+        ok = all_finite(skew, 3) && all_finite(yx + m, 1) && all_finite(yx + n + m, 1);
     }
     release_buffers(views, 3);
     return PyBool_FromLong(ok);
 }
 
 /* matrices_to_rotvecs(out, R, turn) -> bool
- * Stage 2 of matrix_to_rotvec (its Python-float path): the rotation vectors (n, 3) of matrices
- * (n, 3, 3) that passed angle_arguments, turn their angles (radians or degrees); False when the
- * vector part of a quaternion needs rescaling. */
+ * Stage 2 of matrix_to_rotvec (its Python-float path, and for the identity and tiny turns
+ * _quaternion_kernels.rotation_vectors): the rotation vectors (n, 3) of matrices (n, 3, 3)
+ * that passed angle_arguments, turn their angles (radians or degrees). */
 static PyObject *
 matrices_to_rotvecs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
@@ -430,8 +454,7 @@ matrices_to_rotvecs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     int ok = count_of(&views[0]) == 3 * n && count_of(&views[2]) == n;
     for (Py_ssize_t m = 0; ok && m < n; m++) {
         double v[3], length;
-        ok = vector_part(entries + 9 * m, v, &length);
-        double factor = turn[m] / length;
+        double factor = turn[m] / vector_part(entries + 9 * m, v, &length);
         for (int i = 0; i < 3; i++) {
             out[3 * m + i] = v[i] * factor;
         }
@@ -442,8 +465,8 @@ matrices_to_rotvecs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 
 /* matrices_to_axes(out, R) -> bool
  * The unit axes (n, 3) of matrices (n, 3, 3) that passed angle_arguments, as
- * matrix_to_axis_angle's Python-float path (_one_axis_angle); False when the vector part of a
- * quaternion needs rescaling (the identity included). */
+ * matrix_to_axis_angle's Python-float path (_one_axis_angle), and for the identity and tiny
+ * turns as _quaternion_kernels.unit_axes. */
 static PyObject *
 matrices_to_axes(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
@@ -462,9 +485,12 @@ matrices_to_axes(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     int ok = count_of(&views[0]) == 3 * n;
     for (Py_ssize_t m = 0; ok && m < n; m++) {
         double v[3], length;
-        ok = vector_part(entries + 9 * m, v, &length);
+        double divisor = vector_part(entries + 9 * m, v, &length);
         for (int i = 0; i < 3; i++) {
-            out[3 * m + i] = v[i] / length;
+            out[3 * m + i] = v[i] / divisor;
+        }
+        if (length == 0.0) { /* the identity: (1, 0, 0) by convention */
+            out[3 * m] = 1.0;
         }
     }
     release_buffers(views, 2);

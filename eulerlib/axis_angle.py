@@ -43,7 +43,7 @@ nearby rotations. SciPy calls it ``rotvec``.
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -150,6 +150,20 @@ def _compiled_axis_angle(axis: object, angle: object, degrees: bool) -> NDArray[
     np.tan(half, out=half)
     out = np.empty((*shape, 3, 3))
     return out if kernels.axis_angles_to_matrices(out, axes, angles, half, degrees) else None
+
+
+def _compiled_angles(R: object, check: RotationCheck) -> tuple[Any, NDArray[np.float64]] | None:
+    """The matrices ``R`` as a float64 batch and their angles in radians, from the compiled
+    kernels (C, numpy's arctan2 on the batch); None where the kernels do not take them."""
+    kernels, given = _compiled.rotations, _compiled.batch(R, (3, 3))
+    if kernels is None or given is None or check.repair:
+        return None
+    yx = np.empty((2, *given.shape[:-2]))
+    if not kernels.angle_arguments(yx, given, check.validate, check.atol):
+        return None
+    angles = np.empty(given.shape[:-2])  # out=: a 0-d array, not a scalar, for one matrix
+    np.arctan2(yx[0, ...], yx[1, ...], out=angles)
+    return given, angles
 
 
 def axis_angle_to_matrix(
@@ -284,6 +298,12 @@ def matrix_to_axis_angle(
     """
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    compiled = _compiled_angles(R, check)
+    if compiled is not None:  # C, numpy's arctan2, C; or the paths below
+        given, angles = compiled
+        axes = np.empty((*given.shape[:-2], 3))
+        if _compiled.rotations.matrices_to_axes(axes, given):
+            return AxisAngle(axes, np.degrees(angles, out=angles) if in_degrees else angles)
     single = _one_axis_angle(R, check)
     if single is not None:
         one_axis, one_angle = single
@@ -427,6 +447,14 @@ def matrix_to_rotvec(
     """
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    compiled = _compiled_angles(R, check)
+    if compiled is not None:  # C, numpy's arctan2, C; or the paths below
+        given, angles = compiled
+        if in_degrees:
+            np.degrees(angles, out=angles)
+        out = np.empty((*given.shape[:-2], 3))
+        if _compiled.rotations.matrices_to_rotvecs(out, given, angles):
+            return out
     single = _scalar.rotation(R, check)
     if single is not None:
         turn = one_rotation_angle(single)
@@ -497,6 +525,10 @@ def rotation_angle(
     """
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    compiled = _compiled_angles(R, check)
+    if compiled is not None:  # C, then numpy's arctan2
+        angles = compiled[1]
+        return np.degrees(angles, out=angles) if in_degrees else angles
     single = _scalar.rotation(R, check)
     turn = None if single is None else one_rotation_angle(single)
     if turn is not None:
@@ -509,6 +541,26 @@ def rotation_angle(
     if in_degrees:
         np.degrees(angles, out=angles)
     return angles.reshape(lead)
+
+
+def _compiled_relative_angles(
+    R0: object, R1: object, check: RotationCheck
+) -> NDArray[np.float64] | None:
+    """The angles of :func:`angle_between` in radians from the compiled kernels (C, numpy's
+    arctan2), for float64 batches of equal leading shapes or one of them single; else None."""
+    kernels = _compiled.rotations
+    first, second = _compiled.batch(R0, (3, 3)), _compiled.batch(R1, (3, 3))
+    if kernels is None or first is None or second is None or check.repair:
+        return None
+    lead0, lead1 = first.shape[:-2], second.shape[:-2]
+    if lead0 != lead1 and lead0 and lead1:
+        return None
+    yx = np.empty((2, *(lead0 or lead1)))
+    if not kernels.relative_angle_arguments(yx, first, second, check.validate, check.atol):
+        return None
+    angles = np.empty(yx.shape[1:])
+    np.arctan2(yx[0, ...], yx[1, ...], out=angles)
+    return angles
 
 
 def angle_between(
@@ -563,6 +615,9 @@ def angle_between(
     """
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    compiled = _compiled_relative_angles(R0, R1, check)
+    if compiled is not None:
+        return np.degrees(compiled, out=compiled) if in_degrees else compiled
     one_first = _scalar.rotation(R0, check)
     one_second = None if one_first is None else _scalar.rotation(R1, check)
     if one_first is not None and one_second is not None:

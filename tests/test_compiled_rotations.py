@@ -236,3 +236,78 @@ def test_axis_angle_to_matrix_hard_places() -> None:
         assert_same_warned(eulerlib.axis_angle_to_matrix, tiny, np.array(angles[:3]))
         many = np.array(angles)
         assert_same_warned(eulerlib.axis_angle_to_matrix, tiny[0], many, degrees=degrees)
+
+
+# ---- angles, axes and rotation vectors of matrices (C, numpy's arctan2, C)
+
+
+@settings(max_examples=examples(300))
+@given(shape=all_shapes, data=st.data(), degrees=st.booleans(), check=checks)
+def test_matrix_to_rotvec(shape, data, degrees, check) -> None:
+    R = data.draw(rotation_batches(shape))
+    assert_same_warned(eulerlib.matrix_to_rotvec, R, degrees=degrees, **check)
+
+
+@settings(max_examples=examples(300))
+@given(shape=all_shapes, data=st.data(), degrees=st.booleans(), check=checks)
+def test_matrix_to_axis_angle(shape, data, degrees, check) -> None:
+    R = data.draw(rotation_batches(shape))
+    assert_same_warned(eulerlib.matrix_to_axis_angle, R, degrees=degrees, **check)
+
+
+@settings(max_examples=examples(300))
+@given(shape=all_shapes, data=st.data(), degrees=st.booleans(), check=checks)
+def test_rotation_angle(shape, data, degrees, check) -> None:
+    R = data.draw(rotation_batches(shape))
+    assert_same_warned(eulerlib.rotation_angle, R, degrees=degrees, **check)
+
+
+@settings(max_examples=examples(300))
+@given(
+    shapes=st.sampled_from([((), ()), ((3,), (3,)), ((), (4,)), ((20,), ()), ((2, 3), (2, 3))]),
+    data=st.data(),
+    degrees=st.booleans(),
+    check=checks,
+    same=st.booleans(),
+)
+def test_angle_between(shapes, data, degrees, check, same) -> None:
+    R0 = data.draw(rotation_batches(shapes[0]))
+    R1 = R0.copy() if same and shapes[0] == shapes[1] else data.draw(rotation_batches(shapes[1]))
+    assert_same_warned(eulerlib.angle_between, R0, R1, degrees=degrees, **check)
+    assert_same_warned(eulerlib.angle_between, R1, R0, degrees=degrees, **check)
+
+
+@pytest.mark.parametrize(
+    "function",
+    [eulerlib.matrix_to_rotvec, eulerlib.matrix_to_axis_angle, eulerlib.rotation_angle],
+)
+def test_angles_of_matrices_hard_places(function) -> None:
+    for angle in _TURNS:
+        for axis in [*np.eye(3).tolist(), [0.0, -1.0, 0.0], [1.0, 1.0, 0.0], [1.0, -2.0, 3.0]]:
+            R = _turn(np.array(axis), angle)
+            for degrees in (False, True):
+                assert_same_warned(function, R, degrees=degrees)
+                assert_same_warned(function, np.stack([R] * 20), degrees=degrees)
+    for bad in (np.nan, np.inf):
+        R = np.tile(np.eye(3), (20, 1, 1))
+        R[7, 1, 2] = bad
+        assert_same_warned(function, R)
+        assert_same_warned(function, R, validate=False)
+    assert_same_warned(function, np.diag([1.0, 1.0, -1.0]))
+    assert_same_warned(function, np.full((3, 3, 3), 1e308), validate=False)
+    assert_same_warned(function, np.eye(3) * 2.0, validate=False)
+
+
+def test_angle_between_hard_places() -> None:
+    for angle in _TURNS:
+        R = _turn(np.array([1.0, 2.0, -3.0]), angle)
+        for degrees in (False, True):
+            assert_same_warned(eulerlib.angle_between, np.eye(3), R, degrees=degrees)
+            assert_same_warned(eulerlib.angle_between, R, R, degrees=degrees)
+            assert_same_warned(eulerlib.angle_between, np.stack([R] * 20), R, degrees=degrees)
+    bad = np.tile(np.eye(3), (20, 1, 1))
+    bad[3, 0, 0] = np.nan
+    assert_same_warned(eulerlib.angle_between, bad, np.eye(3))
+    assert_same_warned(eulerlib.angle_between, np.eye(3), bad, validate=False)
+    assert_same_warned(eulerlib.angle_between, np.eye(3), np.diag([1.0, -1.0, 1.0]))
+    assert_same_warned(eulerlib.angle_between, np.zeros((2, 3, 3)), np.eye(3), validate=False)
