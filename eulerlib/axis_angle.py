@@ -134,7 +134,7 @@ def _compiled_axis_angle(axis: object, angle: object, degrees: bool) -> NDArray[
     kernels, axes = _compiled.rotations, _compiled.batch(axis, (3,))
     if kernels is None or axes is None:
         return None
-    angles = _compiled.batch(np.array(angle) if type(angle) is float else angle, ())
+    angles = _compiled.batch(np.array(angle) if isinstance(angle, float) else angle, ())
     if angles is None:
         return None
     lead = axes.shape[:-1]

@@ -218,8 +218,8 @@ def test_axis_angle_to_matrix(shapes, data, degrees, plain) -> None:
     axis_shape, angle_shape = shapes
     axis = data.draw(arrays(np.float64, (*axis_shape, 3), elements=vector_elements))
     angle = data.draw(arrays(np.float64, angle_shape, elements=angle_elements))
-    if plain and not angle_shape:
-        angle = float(angle)
+    if plain and not angle_shape:  # a Python float, or NumPy's
+        angle = float(angle) if data.draw(st.booleans()) else np.float64(angle)
     assert_same_warned(eulerlib.axis_angle_to_matrix, axis, angle, degrees=degrees)
 
 
