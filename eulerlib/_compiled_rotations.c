@@ -435,7 +435,8 @@ relative_angle_arguments(PyObject *module, PyObject *const *args, Py_ssize_t nar
 /* matrices_to_rotvecs(out, R, turn) -> bool
  * Stage 2 of matrix_to_rotvec (its Python-float path, and for the identity and tiny turns
  * _quaternion_kernels.rotation_vectors): the rotation vectors (n, 3) of matrices (n, 3, 3)
- * that passed angle_arguments, turn their angles (radians or degrees). */
+ * that passed angle_arguments, turn their angles (radians or degrees); False when a turn over
+ * the length of the vector part overflows (a matrix that is not a rotation, unchecked). */
 static PyObject *
 matrices_to_rotvecs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
@@ -455,6 +456,7 @@ matrices_to_rotvecs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     for (Py_ssize_t m = 0; ok && m < n; m++) {
         double v[3], length;
         double factor = turn[m] / vector_part(entries + 9 * m, v, &length);
+        ok = all_finite(&factor, 1); /* else the array path warns of an overflow */
         for (int i = 0; i < 3; i++) {
             out[3 * m + i] = v[i] * factor;
         }

@@ -49,7 +49,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib import _compiled, _scalar
-from eulerlib._blocks import block_slices
+from eulerlib._blocks import BLOCK_SIZE, block_slices
 from eulerlib._broadcast import broadcast_blocks, broadcast_shape
 from eulerlib._length_kernels import lengths
 from eulerlib._quaternion_kernels import (
@@ -154,15 +154,18 @@ def _compiled_axis_angle(axis: object, angle: object, degrees: bool) -> NDArray[
 
 def _compiled_angles(R: object, check: RotationCheck) -> tuple[Any, NDArray[np.float64]] | None:
     """The matrices ``R`` as a float64 batch and their angles in radians, from the compiled
-    kernels (C, numpy's arctan2 on the batch); None where the kernels do not take them."""
+    kernels (C, numpy's arctan2), block by block; None where the kernels do not take them."""
     kernels, given = _compiled.rotations, _compiled.batch(R, (3, 3))
     if kernels is None or given is None or check.repair:
         return None
-    yx = np.empty((2, *given.shape[:-2]))
-    if not kernels.angle_arguments(yx, given, check.validate, check.atol):
-        return None
-    angles = np.empty(given.shape[:-2])  # out=: a 0-d array, not a scalar, for one matrix
-    np.arctan2(yx[0, ...], yx[1, ...], out=angles)
+    angles = np.empty(given.shape[:-2])  # written through out=: a 0-d array for one matrix
+    column, flat = angles.reshape(-1), given.reshape(-1, 3, 3)
+    scratch = np.empty(2 * min(column.size, BLOCK_SIZE))
+    for block in block_slices(column.size):
+        yx = scratch[: 2 * (block.stop - block.start)].reshape(2, -1)
+        if not kernels.angle_arguments(yx, flat[block], check.validate, check.atol):
+            return None
+        np.arctan2(yx[0], yx[1], out=column[block])
     return given, angles
 
 
@@ -547,7 +550,8 @@ def _compiled_relative_angles(
     R0: object, R1: object, check: RotationCheck
 ) -> NDArray[np.float64] | None:
     """The angles of :func:`angle_between` in radians from the compiled kernels (C, numpy's
-    arctan2), for float64 batches of equal leading shapes or one of them single; else None."""
+    arctan2), block by block, for float64 batches of equal leading shapes or one of them
+    single; else None."""
     kernels = _compiled.rotations
     first, second = _compiled.batch(R0, (3, 3)), _compiled.batch(R1, (3, 3))
     if kernels is None or first is None or second is None or check.repair:
@@ -555,11 +559,17 @@ def _compiled_relative_angles(
     lead0, lead1 = first.shape[:-2], second.shape[:-2]
     if lead0 != lead1 and lead0 and lead1:
         return None
-    yx = np.empty((2, *(lead0 or lead1)))
-    if not kernels.relative_angle_arguments(yx, first, second, check.validate, check.atol):
-        return None
-    angles = np.empty(yx.shape[1:])
-    np.arctan2(yx[0, ...], yx[1, ...], out=angles)
+    angles = np.empty(lead0 or lead1)  # written through out=: a 0-d array for one pair
+    column = angles.reshape(-1)
+    flat0, flat1 = first.reshape(-1, 3, 3), second.reshape(-1, 3, 3)
+    scratch = np.empty(2 * min(column.size, BLOCK_SIZE))
+    for block in block_slices(column.size):
+        yx = scratch[: 2 * (block.stop - block.start)].reshape(2, -1)
+        on0 = flat0[block] if lead0 else flat0
+        on1 = flat1[block] if lead1 else flat1
+        if not kernels.relative_angle_arguments(yx, on0, on1, check.validate, check.atol):
+            return None
+        np.arctan2(yx[0], yx[1], out=column[block])
     return angles
 
 

@@ -167,6 +167,8 @@ def test_matrix_to_quaternion_hard_places() -> None:
     reflection = np.diag([1.0, 1.0, -1.0])
     assert_same_warned(eulerlib.matrix_to_quaternion, reflection)
     assert_same_warned(eulerlib.matrix_to_quaternion, np.full((3, 3, 3), 1e308), validate=False)
+    for unchecked in (np.zeros((3, 3)), np.diag([1.7e308, 0.0, 0.0]), np.zeros((20, 3, 3))):
+        assert_same_warned(eulerlib.matrix_to_quaternion, unchecked, validate=False)
 
 
 # ---- rotation vectors and axis-angle pairs
@@ -296,6 +298,8 @@ def test_angles_of_matrices_hard_places(function) -> None:
     assert_same_warned(function, np.diag([1.0, 1.0, -1.0]))
     assert_same_warned(function, np.full((3, 3, 3), 1e308), validate=False)
     assert_same_warned(function, np.eye(3) * 2.0, validate=False)
+    for unchecked in (np.zeros((3, 3)), np.zeros((20, 3, 3)), np.diag([1.7e308, 0.0, 0.0])):
+        assert_same_warned(function, unchecked, validate=False)
 
 
 def test_angle_between_hard_places() -> None:
