@@ -327,11 +327,13 @@ scaled_length(const double *v)
  * (_length_kernels.TINY) */
 #define EULERLIB_TINY 0x1p-1074
 
-/* The vector part of the canonical quaternion of a rotation matrix (entries_to_quaternion)
- * and what the array path divides it by: its length, or EULERLIB_TINY for a zero vector part
- * (_quaternion_kernels.unit_axes and rotation_vectors); *length gets the length. */
-static inline double
-vector_part(const double *e, double *v, double *length)
+/* The vector part v of the canonical quaternion of a rotation matrix (entries_to_quaternion),
+ * its length, and what the array path divides v by: the length, or EULERLIB_TINY for a zero
+ * vector part (_quaternion_kernels.unit_axes and rotation_vectors). 0 when the quaternion is
+ * not finite or zero, which only an unchecked matrix with entries near the largest float
+ * gives, and where the array path warns of an overflow. */
+static inline int
+vector_part(const double *e, double *v, double *length, double *divisor)
 {
     double q[4];
     entries_to_quaternion(e, q);
@@ -339,7 +341,8 @@ vector_part(const double *e, double *v, double *length)
     v[1] = q[2];
     v[2] = q[3];
     *length = scaled_length(v);
-    return max2(*length, EULERLIB_TINY);
+    *divisor = max2(*length, EULERLIB_TINY);
+    return all_finite(q, 4) && (q[0] != 0.0 || *length != 0.0);
 }
 
 /* angle_arguments(yx, R, validate, atol) -> bool
@@ -454,9 +457,10 @@ matrices_to_rotvecs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     Py_ssize_t n = count_of(&views[1]) / 9;
     int ok = count_of(&views[0]) == 3 * n && count_of(&views[2]) == n;
     for (Py_ssize_t m = 0; ok && m < n; m++) {
-        double v[3], length;
-        double factor = turn[m] / vector_part(entries + 9 * m, v, &length);
-        ok = all_finite(&factor, 1); /* else the array path warns of an overflow */
+        double v[3], length, divisor;
+        ok = vector_part(entries + 9 * m, v, &length, &divisor);
+        double factor = turn[m] / divisor;
+        ok = ok && all_finite(&factor, 1); /* else the array path warns of an overflow */
         for (int i = 0; i < 3; i++) {
             out[3 * m + i] = v[i] * factor;
         }
@@ -468,7 +472,8 @@ matrices_to_rotvecs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 /* matrices_to_axes(out, R) -> bool
  * The unit axes (n, 3) of matrices (n, 3, 3) that passed angle_arguments, as
  * matrix_to_axis_angle's Python-float path (_one_axis_angle), and for the identity and tiny
- * turns as _quaternion_kernels.unit_axes. */
+ * turns as _quaternion_kernels.unit_axes; False for an unchecked matrix whose quaternion
+ * overflows. */
 static PyObject *
 matrices_to_axes(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
@@ -486,8 +491,8 @@ matrices_to_axes(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     Py_ssize_t n = count_of(&views[1]) / 9;
     int ok = count_of(&views[0]) == 3 * n;
     for (Py_ssize_t m = 0; ok && m < n; m++) {
-        double v[3], length;
-        double divisor = vector_part(entries + 9 * m, v, &length);
+        double v[3], length, divisor;
+        ok = vector_part(entries + 9 * m, v, &length, &divisor);
         for (int i = 0; i < 3; i++) {
             out[3 * m + i] = v[i] / divisor;
         }
