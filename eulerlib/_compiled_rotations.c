@@ -58,6 +58,7 @@ take_buffers(PyObject *const *args, Py_ssize_t count, Py_ssize_t outputs, Py_buf
     return 0;
 }
 
+/* Releases the buffers take_buffers took. */
 static void
 release_buffers(Py_buffer *views, Py_ssize_t count)
 {
@@ -66,7 +67,7 @@ release_buffers(Py_buffer *views, Py_ssize_t count)
     }
 }
 
-/* math.radians and math.degrees multiply by these constants */
+/* what math.radians multiplies by, the quotient rounded once */
 static const double radians_per_degree = Py_MATH_PI / 180.0;
 
 /* (cos(θ/2), sin(θ/2)) multiples by the quarter turn k mod 4 (_scalar_kernels._HALF_QUARTER) */
