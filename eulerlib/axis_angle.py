@@ -43,13 +43,13 @@ nearby rotations. SciPy calls it ``rotvec``.
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib import _scalar
-from eulerlib._blocks import block_slices
+from eulerlib import _compiled, _scalar
+from eulerlib._blocks import BLOCK_SIZE, block_slices
 from eulerlib._broadcast import broadcast_blocks, broadcast_shape
 from eulerlib._length_kernels import lengths
 from eulerlib._quaternion_kernels import (
@@ -128,6 +128,47 @@ def _one_axis_angle(
     return (x / length, y / length, z / length), angle
 
 
+def _compiled_axis_angle(axis: object, angle: object, degrees: bool) -> NDArray[np.float64] | None:
+    """The matrices of :func:`axis_angle_to_matrix` from the compiled kernels (C, numpy's tan,
+    C), for float64 arrays whose shapes are equal or one of which is single; else None."""
+    kernels, axes = _compiled.rotations, _compiled.batch(axis, (3,))
+    if kernels is None or axes is None:
+        return None
+    angles = _compiled.batch(np.array(angle) if isinstance(angle, float) else angle, ())
+    if angles is None:
+        return None
+    lead = axes.shape[:-1]
+    if angles.shape == lead or angles.ndim == 0:
+        shape = lead
+    elif not lead:
+        shape = angles.shape
+    else:
+        return None
+    half = np.empty(angles.shape)
+    if not kernels.half_angles(half, angles, degrees):
+        return None
+    np.tan(half, out=half)
+    out = np.empty((*shape, 3, 3))
+    return out if kernels.axis_angles_to_matrices(out, axes, angles, half, degrees) else None
+
+
+def _compiled_angles(R: object, check: RotationCheck) -> tuple[Any, NDArray[np.float64]] | None:
+    """The matrices ``R`` as a float64 batch and their angles in radians, from the compiled
+    kernels (C, numpy's arctan2), block by block; None where the kernels do not take them."""
+    kernels, given = _compiled.rotations, _compiled.batch(R, (3, 3))
+    if kernels is None or given is None or check.repair:
+        return None
+    angles = np.empty(given.shape[:-2])  # written through out=: a 0-d array for one matrix
+    column, flat = angles.reshape(-1), given.reshape(-1, 3, 3)
+    scratch = np.empty(2 * min(column.size, BLOCK_SIZE))
+    for block in block_slices(column.size):
+        yx = scratch[: 2 * (block.stop - block.start)].reshape(2, -1)
+        if not kernels.angle_arguments(yx, flat[block], check.validate, check.atol):
+            return None
+        np.arctan2(yx[0], yx[1], out=column[block])
+    return given, angles
+
+
 def axis_angle_to_matrix(
     axis: ArrayLike, angle: ArrayLike, *, degrees: bool = False
 ) -> NDArray[np.float64]:
@@ -175,6 +216,9 @@ def axis_angle_to_matrix(
     (5, 3, 3)
     """
     in_degrees = check_flag(degrees, "degrees")
+    compiled = _compiled_axis_angle(axis, angle, in_degrees)
+    if compiled is not None:
+        return compiled
     one_axis, one_angle = _scalar.vector(axis), _scalar.number(angle)
     if one_axis is not None and one_angle is not None:
         one_entries = axis_angle_to_entries(one_axis, one_angle, in_degrees)
@@ -257,6 +301,12 @@ def matrix_to_axis_angle(
     """
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    compiled = _compiled_angles(R, check)
+    if compiled is not None:  # C, numpy's arctan2, C; or the paths below
+        given, angles = compiled
+        axes = np.empty((*given.shape[:-2], 3))
+        if _compiled.rotations.matrices_to_axes(axes, given):
+            return AxisAngle(axes, np.degrees(angles, out=angles) if in_degrees else angles)
     single = _one_axis_angle(R, check)
     if single is not None:
         one_axis, one_angle = single
@@ -333,6 +383,14 @@ def rotvec_to_matrix(v: ArrayLike, *, degrees: bool = False) -> NDArray[np.float
     not a number
     """
     in_degrees = check_flag(degrees, "degrees")
+    kernels, given = _compiled.rotations, _compiled.batch(v, (3,))
+    if kernels is not None and given is not None:  # C, numpy's tan, C; or the paths below
+        half = np.empty(given.shape[:-1])
+        if kernels.rotvec_half_angles(half, given, in_degrees):
+            np.tan(half, out=half)
+            out = np.empty((*given.shape[:-1], 3, 3))
+            if kernels.rotvecs_to_matrices(out, given, half, in_degrees):
+                return out
     single = _scalar.vector(v)
     entries = None if single is None else rotvec_to_entries(single, in_degrees)
     if entries is not None:  # None for the zero vector and lengths that need rescaling
@@ -392,6 +450,14 @@ def matrix_to_rotvec(
     """
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    compiled = _compiled_angles(R, check)
+    if compiled is not None:  # C, numpy's arctan2, C; or the paths below
+        given, angles = compiled
+        if in_degrees:
+            np.degrees(angles, out=angles)
+        out = np.empty((*given.shape[:-2], 3))
+        if _compiled.rotations.matrices_to_rotvecs(out, given, angles):
+            return out
     single = _scalar.rotation(R, check)
     if single is not None:
         turn = one_rotation_angle(single)
@@ -462,6 +528,10 @@ def rotation_angle(
     """
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    compiled = _compiled_angles(R, check)
+    if compiled is not None:  # C, then numpy's arctan2
+        angles = compiled[1]
+        return np.degrees(angles, out=angles) if in_degrees else angles
     single = _scalar.rotation(R, check)
     turn = None if single is None else one_rotation_angle(single)
     if turn is not None:
@@ -474,6 +544,33 @@ def rotation_angle(
     if in_degrees:
         np.degrees(angles, out=angles)
     return angles.reshape(lead)
+
+
+def _compiled_relative_angles(
+    R0: object, R1: object, check: RotationCheck
+) -> NDArray[np.float64] | None:
+    """The angles of :func:`angle_between` in radians from the compiled kernels (C, numpy's
+    arctan2), block by block, for float64 batches of equal leading shapes or one of them
+    single; else None."""
+    kernels = _compiled.rotations
+    first, second = _compiled.batch(R0, (3, 3)), _compiled.batch(R1, (3, 3))
+    if kernels is None or first is None or second is None or check.repair:
+        return None
+    lead0, lead1 = first.shape[:-2], second.shape[:-2]
+    if lead0 != lead1 and lead0 and lead1:
+        return None
+    angles = np.empty(lead0 or lead1)  # written through out=: a 0-d array for one pair
+    column = angles.reshape(-1)
+    flat0, flat1 = first.reshape(-1, 3, 3), second.reshape(-1, 3, 3)
+    scratch = np.empty(2 * min(column.size, BLOCK_SIZE))
+    for block in block_slices(column.size):
+        yx = scratch[: 2 * (block.stop - block.start)].reshape(2, -1)
+        on0 = flat0[block] if lead0 else flat0
+        on1 = flat1[block] if lead1 else flat1
+        if not kernels.relative_angle_arguments(yx, on0, on1, check.validate, check.atol):
+            return None
+        np.arctan2(yx[0], yx[1], out=column[block])
+    return angles
 
 
 def angle_between(
@@ -528,6 +625,9 @@ def angle_between(
     """
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    compiled = _compiled_relative_angles(R0, R1, check)
+    if compiled is not None:
+        return np.degrees(compiled, out=compiled) if in_degrees else compiled
     one_first = _scalar.rotation(R0, check)
     one_second = None if one_first is None else _scalar.rotation(R1, check)
     if one_first is not None and one_second is not None:

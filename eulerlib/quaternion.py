@@ -286,6 +286,11 @@ def matrix_to_quaternion(
     """
     first = check_flag(scalar_first, "scalar_first")
     check = rotation_check(validate, repair, atol)
+    kernels, given = _compiled.rotations, _compiled.batch(R, (3, 3))
+    if kernels is not None and given is not None and not check.repair:  # one pass in C
+        out = np.empty((*given.shape[:-2], 4))
+        if kernels.matrices_to_quaternions(out, given, first, check.validate, check.atol):
+            return out
     single = _scalar.rotation(R, check)
     if single is not None:
         return _one_stored(normalized(entries_to_quaternion(single)), first)
