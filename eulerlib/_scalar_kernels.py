@@ -221,10 +221,14 @@ def entries_to_quaternion(e: Nine) -> Four:
     return make_canonical((row[0] * factor, row[1] * factor, row[2] * factor, row[3] * factor))
 
 
-def normalized(q: Four) -> Four:
-    """``q`` divided by its length, as :func:`eulerlib._quaternion_kernels.normalize`."""
+def normalized(q: Four) -> Four | None:
+    """``q`` divided by its length, as :func:`eulerlib._quaternion_kernels.normalize`; None when
+    the length is zero or overflows (only an unchecked matrix far from a rotation gives such a
+    quaternion: the array path handles it)."""
     w, x, y, z = q
     length = math.sqrt(w * w + x * x + y * y + z * z)
+    if not 0.0 < length < math.inf:
+        return None
     return w / length, x / length, y / length, z / length
 
 

@@ -292,13 +292,14 @@ def matrix_to_quaternion(
         if kernels.matrices_to_quaternions(out, given, first, check.validate, check.atol):
             return out
     single = _scalar.rotation(R, check)
-    if single is not None:
-        return _one_stored(normalized(entries_to_quaternion(single)), first)
+    unit = None if single is None else normalized(entries_to_quaternion(single))
+    if unit is not None:
+        return _one_stored(unit, first)
     few = _scalar.rotations(R, check)
-    if few is not None:  # a few matrices, one after another in Python floats
+    units = [] if few is None else [normalized(entries_to_quaternion(row)) for row in few]
+    if units and all(q is not None for q in units):  # a few, one after another in Python floats
         stored = _STORED[first]
-        quaternions = [normalized(entries_to_quaternion(row)) for row in few]
-        return np.array([[q[i] for i in stored] for q in quaternions])
+        return np.array([[q[i] for i in stored] for q in units if q is not None])
     matrices = as_matrix_stack(R, "R")
     lead = matrices.shape[:-2]
     out = np.empty((math.prod(lead), 4))

@@ -12,10 +12,12 @@ path, which the other test files hold against SciPy, mpmath and the papers.
 from __future__ import annotations
 
 import warnings
+from collections.abc import Iterator
 
 import numpy as np
 import pytest
 from budget import examples
+from compiled import numpy_only
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
@@ -24,6 +26,14 @@ import eulerlib
 from eulerlib import ALL_SEQUENCES, GimbalLockWarning
 
 SEQUENCES = [*ALL_SEQUENCES, "rose", "baker", "ros"]
+
+
+@pytest.fixture(autouse=True)
+def _without_compiled_kernels() -> Iterator[None]:
+    """Both paths here are numpy's: the compiled kernels, which would take both the single
+    rotation and the batch, are held against them in tests/test_compiled_*.py."""
+    with numpy_only():
+        yield
 
 
 def assert_ulp(single: np.ndarray, batch: np.ndarray, ulps: int = 0) -> None:
@@ -351,3 +361,18 @@ def test_small_batches_of_quaternions_and_matrices(count: int) -> None:
     with pytest.raises(ValueError) as many:
         eulerlib.matrix_to_quaternion(list(bad))
     assert str(few.value) == str(many.value)
+
+
+@pytest.mark.parametrize("scale", [1.7e308, 1e-300, 0.0])
+def test_unchecked_matrices_far_from_rotations(scale: float) -> None:
+    """With ``validate=False`` a matrix far from any rotation gives a quaternion of zero or
+    overflowing length: the path of one rotation leaves it to the array path (it raised
+    ZeroDivisionError before) and both give the same result."""
+    M = np.diag([scale, 0.0, 0.0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        single = eulerlib.matrix_to_quaternion(M, validate=False)
+        batch = eulerlib.matrix_to_quaternion(M[np.newaxis], validate=False)
+        few = eulerlib.matrix_to_quaternion(np.stack([np.eye(3), M]), validate=False)
+    np.testing.assert_array_equal(single, batch[0])
+    np.testing.assert_array_equal(few[1], batch[0])
