@@ -14,9 +14,10 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from eulerlib import _compiled
 from eulerlib._blocks import block_slices
 from eulerlib._conventions import Convention
-from eulerlib._euler_kernels import fill_matrices, intrinsic_angles
+from eulerlib._euler_kernels import fill_matrices, frame, intrinsic_angles
 from eulerlib._lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
 from eulerlib._scalar import as_array, degrees_of, rotation
 from eulerlib._scalar_kernels import Nine
@@ -100,3 +101,78 @@ def one_matrix_to_angles(
     for anything else (see :mod:`eulerlib._scalar`)."""
     entries = rotation(R, check)
     return None if entries is None else entries_to_angles(entries, convention, degrees)
+
+
+# The compiled kernels (eulerlib/_compiled_euler.c) take a convention as one integer.
+_CODES: dict[Convention, int] = {}
+
+
+def compiled_code(convention: Convention) -> int:
+    """The integer that names ``convention`` to the compiled kernels: the frame's axes i, j, k
+    in bits 0-5, a negative third axis in bit 6, a proper sequence in bit 7, an extrinsic one
+    (written order reversed) in bit 8, the policy of zeroing the first intrinsic angle at lock
+    in bit 9. Remembered for the conventions seen first."""
+    code = _CODES.get(convention)
+    if code is None:
+        parsed = convention.parsed
+        (i, j, k), sign = frame(parsed)
+        flags = (sign[2] < 0, parsed.proper, not parsed.intrinsic)
+        code = i | j << 2 | k << 4 | sum(bit << (6 + n) for n, bit in enumerate(flags))
+        code |= convention.zeroes_intrinsic_first << 9
+        if len(_CODES) < 64:
+            _CODES[convention] = code
+    return code
+
+
+def compiled_sines(kernels: Any, given: NDArray[np.float64], degrees: bool) -> Any:
+    """numpy's sines and cosines that the compiled kernels of angles take for ``given`` (in
+    degrees, of the rests after the quarter turns), or None for angles that are not finite."""
+    rests = np.empty(given.shape) if degrees else given
+    if not kernels.angle_rests(rests, given, degrees):
+        return None
+    return np.sin(rests), np.cos(rests)
+
+
+def compiled_matrices(
+    angles: object, convention: Convention, degrees: bool
+) -> NDArray[np.float64] | None:
+    """:func:`angles_to_matrices` in compiled kernels for a float64 array of angles in argument
+    order, or None where they do not take it (see :mod:`eulerlib._compiled`)."""
+    kernels, given = _compiled.euler, _compiled.batch(angles, (3,))
+    if kernels is None or given is None:
+        return None
+    sines = compiled_sines(kernels, given, degrees)
+    if sines is None:
+        return None
+    out = np.empty((*given.shape[:-1], 3, 3))
+    kernels.angles_to_matrices(out, given, *sines, compiled_code(convention), degrees)
+    return out
+
+
+def compiled_from_pairs(
+    kernels: Any, pairs: NDArray[np.float64], convention: Convention, degrees: bool
+) -> NDArray[np.float64] | None:
+    """The angles in argument order from the arctangent pairs ``(2, ..., 4)`` a compiled
+    kernel wrote, or None when a rotation is at gimbal lock (the array path then applies the
+    policy and warns)."""
+    out = np.empty((*pairs.shape[1:-1], 3))
+    arctangents = np.arctan2(pairs[0], pairs[1])
+    code = compiled_code(convention)
+    if kernels.pairs_to_angles(out, arctangents, code, degrees, GIMBAL_LOCK_TOLERANCE):
+        return out
+    return None
+
+
+def compiled_angles(
+    R: object, convention: Convention, check: RotationCheck, degrees: bool
+) -> NDArray[np.float64] | None:
+    """:func:`matrices_to_angles` in compiled kernels for a float64 array of matrices that
+    passes ``check`` without repair and has no rotation at lock, or None."""
+    kernels, given = _compiled.euler, _compiled.batch(R, (3, 3))
+    if kernels is None or given is None or check.repair:
+        return None
+    pairs = np.empty((2, *given.shape[:-2], 4))
+    code = compiled_code(convention)
+    if not kernels.matrices_to_pairs(pairs, given, code, check.validate, check.atol):
+        return None
+    return compiled_from_pairs(kernels, pairs, convention, degrees)
