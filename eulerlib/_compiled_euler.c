@@ -460,6 +460,126 @@ pairs_to_angles(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     return PyBool_FromLong(ok);
 }
 
+/* half_angles(out, angles, degrees) -> bool
+ * False when an angle is not finite; else writes into `out` the half angles whose tangents
+ * numpy gives (_trig.half_angle_pair): half of each angle in radians, half of its rest after
+ * the quarter turns in degrees. */
+static PyObject *
+half_angles(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)module;
+    if (check_arguments(nargs, 3, "half_angles") < 0) {
+        return NULL;
+    }
+    int degrees = PyObject_IsTrue(args[2]);
+    if (degrees < 0) {
+        return NULL;
+    }
+    Py_buffer v[2];
+    if (open_buffers(args, v, 2, 1) < 0) {
+        return NULL;
+    }
+    Py_ssize_t n = count_of(&v[1]);
+    double *half = v[0].buf;
+    const double *a = v[1].buf;
+    int ok = count_of(&v[0]) == n && all_finite(a, n);
+    int turn;
+    for (Py_ssize_t m = 0; ok && m < n; m++) {
+        half[m] = 0.5 * (degrees ? quarter_rest(a[m], &turn) : a[m]);
+    }
+    release_buffers(v, 2);
+    return PyBool_FromLong(ok);
+}
+
+/* The canonical quaternion (w, x, y, z) of intrinsic angles given by the multiples (c, s) of
+ * the cosines and sines of their halves (_scalar_kernels.euler_to_quaternion). */
+static void
+quaternion_of(const Frame *f, const double *c, const double *s, double *q)
+{
+    double c1 = c[0], c2 = c[1], c3 = c[2], s1 = s[0], s2 = s[1], s3 = s[2];
+    int i = f->index[0], j = f->index[1], k = f->index[2];
+    if (f->proper) {
+        q[0] = c2 * (c1 * c3 - s1 * s3);
+        q[1 + i] = c2 * (c1 * s3 + s1 * c3);
+        q[1 + j] = s2 * (c1 * c3 + s1 * s3);
+        q[1 + k] = s2 * (s1 * c3 - c1 * s3);
+    } else {
+        s3 = s3 * f->sign[2];
+        double c1c2 = c1 * c2, s1s2 = s1 * s2, s1c2 = s1 * c2, c1s2 = c1 * s2;
+        q[0] = c1c2 * c3 - s1s2 * s3;
+        q[1 + i] = s1c2 * c3 + c1s2 * s3;
+        q[1 + j] = c1s2 * c3 - s1c2 * s3;
+        q[1 + k] = c1c2 * s3 + s1s2 * c3;
+    }
+    if (f->sign[2] < 0) {
+        q[1 + k] *= -1.0;
+    }
+    double factor =
+        sqrt(1.0 / ((c1 * c1 + s1 * s1) * (c2 * c2 + s2 * s2) * (c3 * c3 + s3 * s3)));
+    for (int n = 0; n < 4; n++) {
+        q[n] = q[n] * factor;
+    }
+    make_canonical(q);
+}
+
+/* angles_to_quaternions(out, angles, tangents, code, degrees, scalar_first) -> bool
+ * The canonical quaternions (n, 4), stored (x, y, z, w) or (w, x, y, z), of angles (n, 3) in
+ * written order, given numpy's tangents of their half angles (half_angles). */
+static PyObject *
+angles_to_quaternions(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)module;
+    if (check_arguments(nargs, 6, "angles_to_quaternions") < 0) {
+        return NULL;
+    }
+    /* (cos, sin) of k · 45° times √2 for odd k, by k mod 4 (_scalar_kernels._HALF_QUARTER) */
+    static const double quarter_cos[4] = {1.0, 1.0, 0.0, -1.0};
+    static const double quarter_sin[4] = {0.0, 1.0, 1.0, 1.0};
+    Frame f;
+    int degrees = PyObject_IsTrue(args[4]);
+    int first = PyObject_IsTrue(args[5]);
+    if (degrees < 0 || first < 0 || frame_of(args[3], &f) < 0) {
+        return NULL;
+    }
+    Py_buffer v[3];
+    if (open_buffers(args, v, 3, 1) < 0) {
+        return NULL;
+    }
+    Py_ssize_t n = count_of(&v[1]) / 3;
+    int ok = count_of(&v[0]) == 4 * n && count_of(&v[2]) == 3 * n;
+    double *out = v[0].buf;
+    const double *a = v[1].buf, *t = v[2].buf;
+    for (Py_ssize_t m = 0; ok && m < n; m++) {
+        double c[3], s[3], q[4];
+        for (int p = 0; p < 3; p++) { /* intrinsic angle p is written angle w */
+            int w = f.reversed ? 2 - p : p;
+            double tangent = t[3 * m + w];
+            if (!degrees) {
+                c[p] = 1.0;
+                s[p] = tangent;
+                continue;
+            }
+            int turn;
+            (void)quarter_rest(a[3 * m + w], &turn);
+            double qc = quarter_cos[turn], qs = quarter_sin[turn];
+            c[p] = qc - qs * tangent + 0.0;
+            s[p] = qs + qc * tangent + 0.0;
+        }
+        quaternion_of(&f, c, s, q);
+        double *row = out + 4 * m;
+        if (first) {
+            memcpy(row, q, sizeof q);
+        } else {
+            row[0] = q[1];
+            row[1] = q[2];
+            row[2] = q[3];
+            row[3] = q[0];
+        }
+    }
+    release_buffers(v, 3);
+    return PyBool_FromLong(ok);
+}
+
 #define KERNEL(name) {#name, (PyCFunction)(void (*)(void))name, METH_FASTCALL, NULL}
 
 static PyMethodDef methods[] = {
@@ -469,6 +589,8 @@ static PyMethodDef methods[] = {
     KERNEL(quaternions_to_pairs),
     KERNEL(angles_to_pairs),
     KERNEL(pairs_to_angles),
+    KERNEL(half_angles),
+    KERNEL(angles_to_quaternions),
     {NULL, NULL, 0, NULL},
 };
 

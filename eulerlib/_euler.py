@@ -176,3 +176,52 @@ def compiled_angles(
     if not kernels.matrices_to_pairs(pairs, given, code, check.validate, check.atol):
         return None
     return compiled_from_pairs(kernels, pairs, convention, degrees)
+
+
+def compiled_conversion(
+    angles: object, source: Convention, target: Convention, degrees: bool
+) -> NDArray[np.float64] | None:
+    """The angles of ``target`` for angles of ``source`` (a float64 array), through their
+    matrices, in compiled kernels; None where they do not take them or at gimbal lock."""
+    kernels, given = _compiled.euler, _compiled.batch(angles, (3,))
+    if kernels is None or given is None:
+        return None
+    sines = compiled_sines(kernels, given, degrees)
+    if sines is None:
+        return None
+    pairs = np.empty((2, *given.shape[:-1], 4))
+    code, target_code = compiled_code(source), compiled_code(target)
+    kernels.angles_to_pairs(pairs, given, *sines, code, degrees, target_code)
+    return compiled_from_pairs(kernels, pairs, target, degrees)
+
+
+def compiled_quaternions(
+    angles: object, convention: Convention, degrees: bool, scalar_first: bool
+) -> NDArray[np.float64] | None:
+    """The canonical quaternions of a float64 array of angles in compiled kernels, stored as
+    ``scalar_first`` says, or None where they do not take it."""
+    kernels, given = _compiled.euler, _compiled.batch(angles, (3,))
+    if kernels is None or given is None:
+        return None
+    halves = np.empty(given.shape)
+    if not kernels.half_angles(halves, given, degrees):
+        return None
+    out = np.empty((*given.shape[:-1], 4))
+    code = compiled_code(convention)
+    kernels.angles_to_quaternions(out, given, np.tan(halves), code, degrees, scalar_first)
+    return out
+
+
+def compiled_quaternion_angles(
+    q: object, convention: Convention, scalar_first: bool, degrees: bool
+) -> NDArray[np.float64] | None:
+    """The angles of a float64 array of quaternions in compiled kernels, or None where they do
+    not take it (a length that needs rescaling, a rotation at gimbal lock)."""
+    kernels, given = _compiled.euler, _compiled.batch(q, (4,))
+    if kernels is None or given is None:
+        return None
+    pairs = np.empty((2, *given.shape[:-1], 4))
+    code = compiled_code(convention)
+    if not kernels.quaternions_to_pairs(pairs, given, scalar_first, code):
+        return None
+    return compiled_from_pairs(kernels, pairs, convention, degrees)
