@@ -27,7 +27,13 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib import _scalar
-from eulerlib._euler import angles_to_matrices, matrices_to_angles, one_matrix_to_angles
+from eulerlib._euler import (
+    angles_to_matrices,
+    compiled_angles,
+    compiled_matrices,
+    matrices_to_angles,
+    one_matrix_to_angles,
+)
 from eulerlib._scalar_kernels import angles_to_entries
 from eulerlib._validation import (
     ROTATION_ATOL,
@@ -75,7 +81,8 @@ def _named_to_matrix(
         entries = angles_to_entries(intrinsic, convention.parsed, in_degrees)
         return _scalar.as_array(entries, (3, 3))
     stacked = stack_angles(dict(zip(convention.angle_names, values, strict=True)))
-    return angles_to_matrices(stacked, convention, in_degrees)
+    compiled = compiled_matrices(stacked, convention, in_degrees)
+    return angles_to_matrices(stacked, convention, in_degrees) if compiled is None else compiled
 
 
 def _matrix_to_named(
@@ -91,7 +98,9 @@ def _matrix_to_named(
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
     warn_lock = check_flag(warn, "warn")
-    single = one_matrix_to_angles(R, convention, check, in_degrees)
+    single = compiled_angles(R, convention, check, in_degrees)
+    if single is None:
+        single = one_matrix_to_angles(R, convention, check, in_degrees)
     if single is not None:
         angles = single
     else:

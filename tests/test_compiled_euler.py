@@ -281,3 +281,27 @@ def test_many_random_rotations(seq) -> None:
     assert_same_outcome(eulerlib.matrix_to_euler, R, seq)
     assert_same_outcome(eulerlib.matrix_to_euler, R, seq, degrees=True, validate=False)
     assert_same_outcome(eulerlib.quaternion_to_euler, 3.0 * q, seq, degrees=True)
+
+
+def named_angles(function, *args, **kwargs):
+    """The named tuple of a function of named angles as a tuple of arrays, for comparing."""
+    return tuple(function(*args, **kwargs))
+
+
+@settings(max_examples=examples(200), deadline=None)
+@given(shape=shapes, data=st.data(), degrees=st.booleans(), warn=st.booleans())
+def test_named_angles(shape, data, degrees, warn) -> None:
+    angles = data.draw(arrays(np.float64, (*shape, 3), elements=angle_values))
+    a, b, c = angles[..., 0], angles[..., 1], angles[..., 2]
+    for to_matrix, to_angles, seq in [
+        (eulerlib.yaw_pitch_roll_to_matrix, eulerlib.matrix_to_yaw_pitch_roll, "rose"),
+        (
+            eulerlib.heading_attitude_bank_to_matrix,
+            eulerlib.matrix_to_heading_attitude_bank,
+            "baker",
+        ),
+    ]:
+        assert_same_outcome(to_matrix, a, b, c, degrees=degrees)
+        assert_same_outcome(to_matrix, a, 0.5, c, degrees=degrees)
+        R = matrices_near_lock(data, shape, seq)
+        assert_same_outcome(named_angles, to_angles, R, degrees=degrees, warn=warn)
