@@ -8,7 +8,7 @@ that the lock policy and its warning are applied in one place, for all of them.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from typing import Any
 
 import numpy as np
@@ -141,26 +141,45 @@ def compiled_matrices(
     kernels, given = _compiled.euler, _compiled.batch(angles, (3,))
     if kernels is None or given is None:
         return None
-    sines = compiled_sines(kernels, given, degrees)
-    if sines is None:
-        return None
-    out = np.empty((*given.shape[:-1], 3, 3))
-    kernels.angles_to_matrices(out, given, *sines, compiled_code(convention), degrees)
-    return out
+    flat = given.reshape(-1, 3)
+    out = np.empty((flat.shape[0], 9))
+    code = compiled_code(convention)
+    for block in block_slices(flat.shape[0]):  # numpy's sines of a block at a time
+        part = flat[block]
+        sines = compiled_sines(kernels, part, degrees)
+        if sines is None:
+            return None
+        kernels.angles_to_matrices(out[block], part, *sines, code, degrees)
+    return out.reshape(*given.shape[:-1], 3, 3)
+
+
+# writes into ``pairs`` (2, n, 4) the arctangent pairs of a block of rotations; False to decline
+PairFill = Callable[[NDArray[np.float64], slice], bool]
 
 
 def compiled_from_pairs(
-    kernels: Any, pairs: NDArray[np.float64], convention: Convention, degrees: bool
+    kernels: Any,
+    lead: tuple[int, ...],
+    fill: PairFill,
+    convention: Convention,
+    degrees: bool,
 ) -> NDArray[np.float64] | None:
-    """The angles in argument order from the arctangent pairs ``(2, ..., 4)`` a compiled
-    kernel wrote, or None when a rotation is at gimbal lock (the array path then applies the
-    policy and warns)."""
-    out = np.empty((*pairs.shape[1:-1], 3))
-    arctangents = np.arctan2(pairs[0], pairs[1])
+    """The angles, shape ``(*lead, 3)`` in argument order, of rotations whose arctangent
+    pairs ``fill`` writes block by block; None when ``fill`` declines or a rotation is at
+    gimbal lock (the array path then applies the policy and warns)."""
+    count = math.prod(lead)
+    out = np.empty((count, 3))
     code = compiled_code(convention)
-    if kernels.pairs_to_angles(out, arctangents, code, degrees, GIMBAL_LOCK_TOLERANCE):
-        return out
-    return None
+    for block in block_slices(count):
+        pairs = np.empty((2, block.stop - block.start, 4))
+        if not fill(pairs, block):
+            return None
+        arctangents = np.arctan2(pairs[0], pairs[1])
+        if not kernels.pairs_to_angles(
+            out[block], arctangents, code, degrees, GIMBAL_LOCK_TOLERANCE
+        ):
+            return None
+    return out.reshape(*lead, 3)
 
 
 def compiled_angles(
@@ -171,11 +190,13 @@ def compiled_angles(
     kernels, given = _compiled.euler, _compiled.batch(R, (3, 3))
     if kernels is None or given is None or check.repair:
         return None
-    pairs = np.empty((2, *given.shape[:-2], 4))
-    code = compiled_code(convention)
-    if not kernels.matrices_to_pairs(pairs, given, code, check.validate, check.atol):
-        return None
-    return compiled_from_pairs(kernels, pairs, convention, degrees)
+    flat, code = given.reshape(-1, 9), compiled_code(convention)
+
+    def fill(pairs: NDArray[np.float64], block: slice) -> bool:
+        done: bool = kernels.matrices_to_pairs(pairs, flat[block], code, check.validate, check.atol)
+        return done
+
+    return compiled_from_pairs(kernels, given.shape[:-2], fill, convention, degrees)
 
 
 def compiled_conversion(
@@ -186,13 +207,17 @@ def compiled_conversion(
     kernels, given = _compiled.euler, _compiled.batch(angles, (3,))
     if kernels is None or given is None:
         return None
-    sines = compiled_sines(kernels, given, degrees)
-    if sines is None:
-        return None
-    pairs = np.empty((2, *given.shape[:-1], 4))
+    flat = given.reshape(-1, 3)
     code, target_code = compiled_code(source), compiled_code(target)
-    kernels.angles_to_pairs(pairs, given, *sines, code, degrees, target_code)
-    return compiled_from_pairs(kernels, pairs, target, degrees)
+
+    def fill(pairs: NDArray[np.float64], block: slice) -> bool:
+        sines = compiled_sines(kernels, flat[block], degrees)
+        if sines is None:
+            return False
+        kernels.angles_to_pairs(pairs, flat[block], *sines, code, degrees, target_code)
+        return True
+
+    return compiled_from_pairs(kernels, given.shape[:-1], fill, target, degrees)
 
 
 def compiled_quaternions(
@@ -203,13 +228,17 @@ def compiled_quaternions(
     kernels, given = _compiled.euler, _compiled.batch(angles, (3,))
     if kernels is None or given is None:
         return None
-    halves = np.empty(given.shape)
-    if not kernels.half_angles(halves, given, degrees):
-        return None
-    out = np.empty((*given.shape[:-1], 4))
+    flat = given.reshape(-1, 3)
+    out = np.empty((flat.shape[0], 4))
     code = compiled_code(convention)
-    kernels.angles_to_quaternions(out, given, np.tan(halves), code, degrees, scalar_first)
-    return out
+    for block in block_slices(flat.shape[0]):  # numpy's tangents of a block at a time
+        part = flat[block]
+        halves = np.empty(part.shape)
+        if not kernels.half_angles(halves, part, degrees):
+            return None
+        tangents = np.tan(halves)
+        kernels.angles_to_quaternions(out[block], part, tangents, code, degrees, scalar_first)
+    return out.reshape(*given.shape[:-1], 4)
 
 
 def compiled_quaternion_angles(
@@ -220,8 +249,10 @@ def compiled_quaternion_angles(
     kernels, given = _compiled.euler, _compiled.batch(q, (4,))
     if kernels is None or given is None:
         return None
-    pairs = np.empty((2, *given.shape[:-1], 4))
-    code = compiled_code(convention)
-    if not kernels.quaternions_to_pairs(pairs, given, scalar_first, code):
-        return None
-    return compiled_from_pairs(kernels, pairs, convention, degrees)
+    flat, code = given.reshape(-1, 4), compiled_code(convention)
+
+    def fill(pairs: NDArray[np.float64], block: slice) -> bool:
+        done: bool = kernels.quaternions_to_pairs(pairs, flat[block], scalar_first, code)
+        return done
+
+    return compiled_from_pairs(kernels, given.shape[:-1], fill, convention, degrees)

@@ -305,3 +305,25 @@ def test_named_angles(shape, data, degrees, warn) -> None:
         assert_same_outcome(to_matrix, a, 0.5, c, degrees=degrees)
         R = matrices_near_lock(data, shape, seq)
         assert_same_outcome(named_angles, to_angles, R, degrees=degrees, warn=warn)
+
+
+@pytest.mark.parametrize("trouble", ["none", "lock", "nan"])
+def test_batches_of_several_blocks(trouble) -> None:
+    """More rotations than one block of the array path (16384), with a lock or a NaN in the
+    last block, which sends the whole call to the array path."""
+    rng = np.random.default_rng(7)
+    angles = rng.uniform(-3.0, 3.0, (2, 10000, 3))
+    with numpy_only():
+        R = eulerlib.euler_to_matrix(angles, "zyx")
+        q = eulerlib.euler_to_quaternion(angles, "zyx")
+    if trouble == "lock":
+        angles[1, -1, 1] = 0.5 * np.pi
+        R[1, -1] = np.array([[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]])
+        q[1, -1] = [0.0, np.sqrt(0.5), 0.0, np.sqrt(0.5)]
+    elif trouble == "nan":
+        angles[1, -1, 2] = R[1, -1, 2, 2] = q[1, -1, 0] = np.nan
+    assert_same_outcome(eulerlib.euler_to_matrix, angles, "zyx")
+    assert_same_outcome(eulerlib.euler_to_quaternion, angles, "zyx", degrees=True)
+    assert_same_outcome(eulerlib.convert_angles, angles, "xyz", "rose")
+    assert_same_outcome(eulerlib.matrix_to_euler, R, "zyx")
+    assert_same_outcome(eulerlib.quaternion_to_euler, q, "zyx")
