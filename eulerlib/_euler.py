@@ -8,14 +8,14 @@ that the lock policy and its warning are applied in one place, for all of them.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from eulerlib import _compiled
-from eulerlib._blocks import block_slices
+from eulerlib._blocks import BLOCK_SIZE, block_slices
 from eulerlib._conventions import Convention
 from eulerlib._euler_kernels import fill_matrices, frame, intrinsic_angles
 from eulerlib._lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
@@ -133,6 +133,29 @@ def compiled_sines(kernels: Any, given: NDArray[np.float64], degrees: bool) -> A
     return np.sin(rests), np.cos(rests)
 
 
+def _parts(given: NDArray[np.float64], width: int) -> Iterator[NDArray[np.float64]]:
+    """``given`` whole when it holds one block of rotations (the common case, with no
+    reshaping), else its rotations ``(n, width)`` block by block, so that the temporaries of a
+    large batch stay the size of a block."""
+    count = given.size // width
+    if count <= BLOCK_SIZE:
+        yield given
+        return
+    flat = given.reshape(-1, width)
+    for block in block_slices(count):
+        yield flat[block]
+
+
+def _out_parts(out: NDArray[np.float64], count: int, width: int) -> Iterator[NDArray[np.float64]]:
+    """The parts of a new output that go with :func:`_parts` of its input."""
+    if count <= BLOCK_SIZE:
+        yield out
+        return
+    flat = out.reshape(-1, width)
+    for block in block_slices(count):
+        yield flat[block]
+
+
 def compiled_matrices(
     angles: object, convention: Convention, degrees: bool
 ) -> NDArray[np.float64] | None:
@@ -141,45 +164,44 @@ def compiled_matrices(
     kernels, given = _compiled.euler, _compiled.batch(angles, (3,))
     if kernels is None or given is None:
         return None
-    flat = given.reshape(-1, 3)
-    out = np.empty((flat.shape[0], 9))
+    out = np.empty((*given.shape[:-1], 3, 3))
     code = compiled_code(convention)
-    for block in block_slices(flat.shape[0]):  # numpy's sines of a block at a time
-        part = flat[block]
-        sines = compiled_sines(kernels, part, degrees)
+    for part, out_part in zip(_parts(given, 3), _out_parts(out, out.size // 9, 9), strict=True):
+        sines = compiled_sines(kernels, part, degrees)  # numpy's, a block at a time
         if sines is None:
             return None
-        kernels.angles_to_matrices(out[block], part, *sines, code, degrees)
-    return out.reshape(*given.shape[:-1], 3, 3)
+        kernels.angles_to_matrices(out_part, part, *sines, code, degrees)
+    return out
 
 
-# writes into ``pairs`` (2, n, 4) the arctangent pairs of a block of rotations; False to decline
-PairFill = Callable[[NDArray[np.float64], slice], bool]
+# writes into ``pairs`` (2, n, 4) the arctangent pairs of a part of the rotations; False to
+# decline
+PairFill = Callable[[NDArray[np.float64], NDArray[np.float64]], bool]
 
 
 def compiled_from_pairs(
     kernels: Any,
-    lead: tuple[int, ...],
+    given: NDArray[np.float64],
+    width: int,
     fill: PairFill,
     convention: Convention,
     degrees: bool,
 ) -> NDArray[np.float64] | None:
-    """The angles, shape ``(*lead, 3)`` in argument order, of rotations whose arctangent
-    pairs ``fill`` writes block by block; None when ``fill`` declines or a rotation is at
-    gimbal lock (the array path then applies the policy and warns)."""
-    count = math.prod(lead)
-    out = np.empty((count, 3))
+    """The angles in argument order, shape ``(..., 3)``, of the rotations ``given``
+    ``(..., *shape)`` with ``width`` numbers each, whose arctangent pairs ``fill`` writes part
+    by part; None when ``fill`` declines or a rotation is at gimbal lock (the array path then
+    applies the policy and warns)."""
+    count = given.size // width
+    out = np.empty((*given.shape[: given.ndim - (2 if width == 9 else 1)], 3))
     code = compiled_code(convention)
-    for block in block_slices(count):
-        pairs = np.empty((2, block.stop - block.start, 4))
-        if not fill(pairs, block):
+    for part, out_part in zip(_parts(given, width), _out_parts(out, count, 3), strict=True):
+        pairs = np.empty((2, part.size // width, 4))
+        if not fill(pairs, part):
             return None
         arctangents = np.arctan2(pairs[0], pairs[1])
-        if not kernels.pairs_to_angles(
-            out[block], arctangents, code, degrees, GIMBAL_LOCK_TOLERANCE
-        ):
+        if not kernels.pairs_to_angles(out_part, arctangents, code, degrees, GIMBAL_LOCK_TOLERANCE):
             return None
-    return out.reshape(*lead, 3)
+    return out
 
 
 def compiled_angles(
@@ -190,13 +212,13 @@ def compiled_angles(
     kernels, given = _compiled.euler, _compiled.batch(R, (3, 3))
     if kernels is None or given is None or check.repair:
         return None
-    flat, code = given.reshape(-1, 9), compiled_code(convention)
+    code = compiled_code(convention)
 
-    def fill(pairs: NDArray[np.float64], block: slice) -> bool:
-        done: bool = kernels.matrices_to_pairs(pairs, flat[block], code, check.validate, check.atol)
+    def fill(pairs: NDArray[np.float64], part: NDArray[np.float64]) -> bool:
+        done: bool = kernels.matrices_to_pairs(pairs, part, code, check.validate, check.atol)
         return done
 
-    return compiled_from_pairs(kernels, given.shape[:-2], fill, convention, degrees)
+    return compiled_from_pairs(kernels, given, 9, fill, convention, degrees)
 
 
 def compiled_conversion(
@@ -207,17 +229,16 @@ def compiled_conversion(
     kernels, given = _compiled.euler, _compiled.batch(angles, (3,))
     if kernels is None or given is None:
         return None
-    flat = given.reshape(-1, 3)
     code, target_code = compiled_code(source), compiled_code(target)
 
-    def fill(pairs: NDArray[np.float64], block: slice) -> bool:
-        sines = compiled_sines(kernels, flat[block], degrees)
+    def fill(pairs: NDArray[np.float64], part: NDArray[np.float64]) -> bool:
+        sines = compiled_sines(kernels, part, degrees)
         if sines is None:
             return False
-        kernels.angles_to_pairs(pairs, flat[block], *sines, code, degrees, target_code)
+        kernels.angles_to_pairs(pairs, part, *sines, code, degrees, target_code)
         return True
 
-    return compiled_from_pairs(kernels, given.shape[:-1], fill, target, degrees)
+    return compiled_from_pairs(kernels, given, 3, fill, target, degrees)
 
 
 def compiled_quaternions(
@@ -228,17 +249,15 @@ def compiled_quaternions(
     kernels, given = _compiled.euler, _compiled.batch(angles, (3,))
     if kernels is None or given is None:
         return None
-    flat = given.reshape(-1, 3)
-    out = np.empty((flat.shape[0], 4))
+    out = np.empty((*given.shape[:-1], 4))
     code = compiled_code(convention)
-    for block in block_slices(flat.shape[0]):  # numpy's tangents of a block at a time
-        part = flat[block]
+    for part, out_part in zip(_parts(given, 3), _out_parts(out, out.size // 4, 4), strict=True):
         halves = np.empty(part.shape)
         if not kernels.half_angles(halves, part, degrees):
             return None
-        tangents = np.tan(halves)
-        kernels.angles_to_quaternions(out[block], part, tangents, code, degrees, scalar_first)
-    return out.reshape(*given.shape[:-1], 4)
+        tangents = np.tan(halves)  # numpy's, a block at a time
+        kernels.angles_to_quaternions(out_part, part, tangents, code, degrees, scalar_first)
+    return out
 
 
 def compiled_quaternion_angles(
@@ -249,10 +268,10 @@ def compiled_quaternion_angles(
     kernels, given = _compiled.euler, _compiled.batch(q, (4,))
     if kernels is None or given is None:
         return None
-    flat, code = given.reshape(-1, 4), compiled_code(convention)
+    code = compiled_code(convention)
 
-    def fill(pairs: NDArray[np.float64], block: slice) -> bool:
-        done: bool = kernels.quaternions_to_pairs(pairs, flat[block], scalar_first, code)
+    def fill(pairs: NDArray[np.float64], part: NDArray[np.float64]) -> bool:
+        done: bool = kernels.quaternions_to_pairs(pairs, part, scalar_first, code)
         return done
 
-    return compiled_from_pairs(kernels, given.shape[:-1], fill, convention, degrees)
+    return compiled_from_pairs(kernels, given, 4, fill, convention, degrees)
