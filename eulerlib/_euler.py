@@ -194,6 +194,13 @@ def compiled_from_pairs(
     count = given.size // width
     out = np.empty((*given.shape[: given.ndim - (2 if width == 9 else 1)], 3))
     code = compiled_code(convention)
+    if count <= BLOCK_SIZE:  # the same as the loop below, with less set-up for one block
+        pairs = np.empty((2, count, 4))
+        if fill(pairs, given) and kernels.pairs_to_angles(
+            out, np.arctan2(pairs[0], pairs[1]), code, degrees, GIMBAL_LOCK_TOLERANCE
+        ):
+            return out
+        return None
     for part, out_part in zip(_parts(given, width), _out_parts(out, count, 3), strict=True):
         pairs = np.empty((2, part.size // width, 4))
         if not fill(pairs, part):
