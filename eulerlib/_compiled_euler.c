@@ -580,6 +580,49 @@ angles_to_quaternions(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     return PyBool_FromLong(ok);
 }
 
+/* elementary_matrices(out, angles, sines, cosines, axis, degrees) -> bool
+ * The matrices (n, 3, 3) of turns by n angles about the axis 0, 1 or 2, given numpy's sines
+ * and cosines of their rests (angle_rests); as eulerlib.elementary_rotation writes them. */
+static PyObject *
+elementary_matrices(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)module;
+    if (check_arguments(nargs, 6, "elementary_matrices") < 0) {
+        return NULL;
+    }
+    long axis = PyLong_AsLong(args[4]);
+    int degrees = PyObject_IsTrue(args[5]);
+    if ((axis == -1 && PyErr_Occurred()) || degrees < 0) {
+        return NULL;
+    }
+    Py_buffer v[4];
+    if (open_buffers(args, v, 4, 1) < 0) {
+        return NULL;
+    }
+    Py_ssize_t n = count_of(&v[1]);
+    int ok = 0 <= axis && axis <= 2 && count_of(&v[0]) == 9 * n && count_of(&v[2]) == n &&
+             count_of(&v[3]) == n;
+    int index = (int)axis, i = (index + 1) % 3, j = (index + 2) % 3;
+    double *e = v[0].buf;
+    const double *a = v[1].buf, *sines = v[2].buf, *cosines = v[3].buf;
+    for (Py_ssize_t m = 0; ok && m < n; m++) {
+        double three[3] = {a[m], 0.0, 0.0}, s3[3] = {sines[m], 0.0, 0.0};
+        double c3[3] = {cosines[m], 1.0, 1.0}, s[3], c[3];
+        turned(three, s3, c3, degrees, s, c);
+        double *r = e + 9 * m;
+        for (int p = 0; p < 9; p++) {
+            r[p] = 0.0;
+        }
+        r[4 * index] = 1.0;
+        r[4 * i] = c[0];
+        r[4 * j] = c[0];
+        r[3 * i + j] = 0.0 - s[0];
+        r[3 * j + i] = s[0];
+    }
+    release_buffers(v, 4);
+    return PyBool_FromLong(ok);
+}
+
 #define KERNEL(name) {#name, (PyCFunction)(void (*)(void))name, METH_FASTCALL, NULL}
 
 static PyMethodDef methods[] = {
@@ -591,6 +634,7 @@ static PyMethodDef methods[] = {
     KERNEL(pairs_to_angles),
     KERNEL(half_angles),
     KERNEL(angles_to_quaternions),
+    KERNEL(elementary_matrices),
     {NULL, NULL, 0, NULL},
 };
 

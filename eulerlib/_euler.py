@@ -282,3 +282,18 @@ def compiled_quaternion_angles(
         return done
 
     return compiled_from_pairs(kernels, given, 4, fill, convention, degrees)
+
+
+def compiled_elementary(axis: int, angle: object, degrees: bool) -> NDArray[np.float64] | None:
+    """The matrices of turns by a float64 array of angles about ``axis`` in compiled kernels,
+    as :func:`eulerlib.elementary_rotation` gives them, or None where they do not take it."""
+    kernels, given = _compiled.euler, _compiled.batch(angle, ())
+    if kernels is None or given is None:
+        return None
+    out = np.empty((*given.shape, 3, 3))
+    for part, out_part in zip(_parts(given, 1), _out_parts(out, given.size, 9), strict=True):
+        sines = compiled_sines(kernels, part, degrees)  # numpy's, a block at a time
+        if sines is None:
+            return None
+        kernels.elementary_matrices(out_part, part, *sines, axis, degrees)
+    return out

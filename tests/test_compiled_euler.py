@@ -327,3 +327,26 @@ def test_batches_of_several_blocks(trouble) -> None:
     assert_same_outcome(eulerlib.convert_angles, angles, "xyz", "rose")
     assert_same_outcome(eulerlib.matrix_to_euler, R, "zyx")
     assert_same_outcome(eulerlib.quaternion_to_euler, q, "zyx")
+
+
+@settings(max_examples=examples(300), deadline=None)
+@given(
+    shape=st.sampled_from([(), (1,), (3,), (2, 3), (17,)]),
+    data=st.data(),
+    axis=st.sampled_from(["x", "y", "z", 0, 1, 2]),
+    degrees=st.booleans(),
+)
+def test_elementary_rotations(shape, data, axis, degrees) -> None:
+    angle = data.draw(arrays(np.float64, shape, elements=angle_values))
+    assert_same_outcome(eulerlib.elementary_rotation, axis, angle, degrees=degrees)
+    for function in (eulerlib.rot_x, eulerlib.rot_y, eulerlib.rot_z):
+        assert_same_outcome(function, angle, degrees=degrees)
+
+
+def test_elementary_rotations_of_many_angles_and_bad_ones() -> None:
+    rng = np.random.default_rng(3)
+    angles = np.concatenate([rng.uniform(-720.0, 720.0, 20000), np.arange(-720.0, 721.0, 45)])
+    for degrees in (False, True):
+        assert_same_outcome(eulerlib.rot_y, angles, degrees=degrees)
+        assert_same_outcome(eulerlib.rot_z, np.array([0.0, np.nan]), degrees=degrees)
+        assert_same_outcome(eulerlib.rot_x, np.array(np.inf), degrees=degrees)
