@@ -80,9 +80,29 @@ def _named_to_matrix(
         intrinsic = convention.to_intrinsic((a, b, c))
         entries = angles_to_entries(intrinsic, convention.parsed, in_degrees)
         return _scalar.as_array(entries, (3, 3))
+    same = _same_shape_floats(values)
+    compiled = None if same is None else compiled_matrices(same, convention, in_degrees)
+    if compiled is not None:  # compiled kernels, which check the angles themselves
+        return compiled
     stacked = stack_angles(dict(zip(convention.angle_names, values, strict=True)))
     compiled = compiled_matrices(stacked, convention, in_degrees)
     return angles_to_matrices(stacked, convention, in_degrees) if compiled is None else compiled
+
+
+def _same_shape_floats(
+    values: tuple[ArrayLike, ArrayLike, ArrayLike],
+) -> NDArray[np.float64] | None:
+    """Three float64 arrays of one shape stacked into ``(..., 3)`` with no check, for the
+    compiled kernels (which check them and decline anything the full path must word); None
+    for anything else."""
+    a, b, c = values
+    if type(a) is not np.ndarray or type(b) is not np.ndarray or type(c) is not np.ndarray:
+        return None
+    if not (a.dtype == b.dtype == c.dtype == np.float64 and a.shape == b.shape == c.shape):
+        return None
+    stacked = np.empty((*a.shape, 3))
+    stacked[..., 0], stacked[..., 1], stacked[..., 2] = a, b, c
+    return stacked
 
 
 def _matrix_to_named(

@@ -350,3 +350,12 @@ def test_elementary_rotations_of_many_angles_and_bad_ones() -> None:
         assert_same_outcome(eulerlib.rot_y, angles, degrees=degrees)
         assert_same_outcome(eulerlib.rot_z, np.array([0.0, np.nan]), degrees=degrees)
         assert_same_outcome(eulerlib.rot_x, np.array(np.inf), degrees=degrees)
+
+
+def test_named_angles_refused_alike() -> None:
+    good, bad = np.array([0.1, 0.2]), np.array([0.3, np.nan])
+    for to_matrix in (eulerlib.yaw_pitch_roll_to_matrix, eulerlib.heading_attitude_bank_to_matrix):
+        assert_same_outcome(to_matrix, good, bad, good)
+        assert_same_outcome(to_matrix, good, good, np.array([0.1, 0.2, 0.3]))
+        assert_same_outcome(to_matrix, good, good.astype(np.float32), good, degrees=True)
+        assert_same_outcome(to_matrix, good, good, good, degrees=1)
