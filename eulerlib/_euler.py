@@ -104,15 +104,17 @@ def one_matrix_to_angles(
 
 
 # The compiled kernels (eulerlib/_compiled_euler.c) take a convention as one integer.
-_CODES: dict[Convention, int] = {}
+_CODES: dict[tuple[str, str], int] = {}
 
 
 def compiled_code(convention: Convention) -> int:
     """The integer that names ``convention`` to the compiled kernels: the frame's axes i, j, k
     in bits 0-5, a negative third axis in bit 6, a proper sequence in bit 7, an extrinsic one
     (written order reversed) in bit 8, the policy of zeroing the first intrinsic angle at lock
-    in bit 9. Remembered for the conventions seen first."""
-    code = _CODES.get(convention)
+    in bit 9. Remembered, by sequence and lock policy (all it depends on), for the first few
+    seen."""
+    key = (convention.seq, convention.lock_zeroes)
+    code = _CODES.get(key)
     if code is None:
         parsed = convention.parsed
         (i, j, k), sign = frame(parsed)
@@ -120,7 +122,7 @@ def compiled_code(convention: Convention) -> int:
         code = i | j << 2 | k << 4 | sum(bit << (6 + n) for n, bit in enumerate(flags))
         code |= convention.zeroes_intrinsic_first << 9
         if len(_CODES) < 64:
-            _CODES[convention] = code
+            _CODES[key] = code
     return code
 
 
