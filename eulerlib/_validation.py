@@ -269,11 +269,16 @@ class RotationCheck(NamedTuple):
 
 def rotation_check(validate: object, repair: object, atol: object) -> RotationCheck:
     """Check the ``validate``, ``repair`` and ``atol`` keywords of a public function."""
+    if validate is True and repair is False and atol is ROTATION_ATOL:
+        return _DEFAULT_CHECK  # the defaults, checked once: a call on one rotation is short
     return RotationCheck(
         check_flag(validate, "validate"),
         check_flag(repair, "repair"),
         check_tolerance(atol, "atol"),
     )
+
+
+_DEFAULT_CHECK = RotationCheck(True, False, ROTATION_ATOL)
 
 
 def matrix_entries(R: NDArray[np.float64]) -> NDArray[np.float64]:

@@ -19,7 +19,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from eulerlib import _scalar
 from eulerlib._blocks import block_slices
-from eulerlib._euler import entries_to_angles
+from eulerlib._euler import compiled_conversion, entries_to_angles
 from eulerlib._euler_kernels import fill_matrices, intrinsic_angles, relabel_into
 from eulerlib._lock import GIMBAL_LOCK_TOLERANCE, warn_if_locked
 from eulerlib._scalar_kernels import angles_to_entries
@@ -89,6 +89,9 @@ def convert_angles(
     in_degrees = check_flag(degrees, "degrees")
     warn_lock = check_flag(warn, "warn")
     move = check_flag(relabel, "relabel")
+    compiled = None if move else compiled_conversion(angles, source, target, in_degrees)
+    if compiled is not None:  # compiled kernels, or the paths below (which warn at lock)
+        return compiled
     single = None if move else _scalar.vector(angles)
     if single is not None:  # one rotation, in Python floats; None at lock (the array path warns)
         entries = angles_to_entries(source.to_intrinsic(single), source.parsed, in_degrees)

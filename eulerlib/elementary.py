@@ -25,6 +25,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib import _scalar
+from eulerlib._euler import compiled_elementary
 from eulerlib._scalar_kernels import sin_cos as one_sin_cos
 from eulerlib._trig import sin_cos
 from eulerlib._validation import as_float_array, check_flag
@@ -72,6 +73,9 @@ def elementary_rotation(
     """
     index = parse_axis(axis)
     in_degrees = check_flag(degrees, "degrees")
+    compiled = compiled_elementary(index, angle, in_degrees)
+    if compiled is not None:  # compiled kernels, or the paths below
+        return compiled
     i, j = (index + 1) % 3, (index + 2) % 3
     single = _scalar.number(angle)
     if single is not None:  # one angle: the same numbers in Python floats

@@ -53,7 +53,13 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib import _scalar
-from eulerlib._euler import angles_to_matrices, matrices_to_angles, one_matrix_to_angles
+from eulerlib._euler import (
+    angles_to_matrices,
+    compiled_angles,
+    compiled_matrices,
+    matrices_to_angles,
+    one_matrix_to_angles,
+)
 from eulerlib._scalar_kernels import angles_to_entries
 from eulerlib._validation import (
     ROTATION_ATOL,
@@ -116,6 +122,9 @@ def euler_to_matrix(
     """
     convention = get_convention(seq)
     in_degrees = check_flag(degrees, "degrees")
+    compiled = compiled_matrices(angles, convention, in_degrees)
+    if compiled is not None:  # compiled kernels, or the paths below
+        return compiled
     single = _scalar.vector(angles)
     if single is not None:  # one rotation: the same formulas in Python floats
         entries = angles_to_entries(convention.to_intrinsic(single), convention.parsed, in_degrees)
@@ -205,6 +214,9 @@ def matrix_to_euler(
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
     warn_lock = check_flag(warn, "warn")
+    compiled = compiled_angles(R, convention, check, in_degrees)
+    if compiled is not None:  # compiled kernels, or the paths below (which warn at lock)
+        return compiled
     single = one_matrix_to_angles(R, convention, check, in_degrees)
     if single is not None:
         return single

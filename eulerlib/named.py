@@ -27,7 +27,13 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib import _scalar
-from eulerlib._euler import angles_to_matrices, matrices_to_angles, one_matrix_to_angles
+from eulerlib._euler import (
+    angles_to_matrices,
+    compiled_angles,
+    compiled_matrices,
+    matrices_to_angles,
+    one_matrix_to_angles,
+)
 from eulerlib._scalar_kernels import angles_to_entries
 from eulerlib._validation import (
     ROTATION_ATOL,
@@ -74,8 +80,29 @@ def _named_to_matrix(
         intrinsic = convention.to_intrinsic((a, b, c))
         entries = angles_to_entries(intrinsic, convention.parsed, in_degrees)
         return _scalar.as_array(entries, (3, 3))
+    same = _same_shape_floats(values)
+    compiled = None if same is None else compiled_matrices(same, convention, in_degrees)
+    if compiled is not None:  # compiled kernels, which check the angles themselves
+        return compiled
     stacked = stack_angles(dict(zip(convention.angle_names, values, strict=True)))
-    return angles_to_matrices(stacked, convention, in_degrees)
+    compiled = compiled_matrices(stacked, convention, in_degrees)
+    return angles_to_matrices(stacked, convention, in_degrees) if compiled is None else compiled
+
+
+def _same_shape_floats(
+    values: tuple[ArrayLike, ArrayLike, ArrayLike],
+) -> NDArray[np.float64] | None:
+    """Three float64 arrays of one shape stacked into ``(..., 3)`` with no check, for the
+    compiled kernels (which check them and decline anything the full path must word); None
+    for anything else."""
+    a, b, c = values
+    if type(a) is not np.ndarray or type(b) is not np.ndarray or type(c) is not np.ndarray:
+        return None
+    if not (a.dtype == b.dtype == c.dtype == np.float64 and a.shape == b.shape == c.shape):
+        return None
+    stacked = np.empty((*a.shape, 3))
+    stacked[..., 0], stacked[..., 1], stacked[..., 2] = a, b, c
+    return stacked
 
 
 def _matrix_to_named(
@@ -91,7 +118,9 @@ def _matrix_to_named(
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
     warn_lock = check_flag(warn, "warn")
-    single = one_matrix_to_angles(R, convention, check, in_degrees)
+    single = compiled_angles(R, convention, check, in_degrees)
+    if single is None:
+        single = one_matrix_to_angles(R, convention, check, in_degrees)
     if single is not None:
         angles = single
     else:

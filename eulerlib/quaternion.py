@@ -56,7 +56,12 @@ from numpy.typing import ArrayLike, NDArray
 
 from eulerlib import _compiled, _scalar
 from eulerlib._blocks import block_slices
-from eulerlib._euler import entries_to_angles, entry_blocks_to_angles
+from eulerlib._euler import (
+    compiled_quaternion_angles,
+    compiled_quaternions,
+    entries_to_angles,
+    entry_blocks_to_angles,
+)
 from eulerlib._length_kernels import out_of_range
 from eulerlib._quaternion_kernels import (
     entries_to_quaternions,
@@ -358,6 +363,9 @@ def euler_to_quaternion(
     convention = get_convention(seq)
     in_degrees = check_flag(degrees, "degrees")
     first = check_flag(scalar_first, "scalar_first")
+    compiled = compiled_quaternions(angles, convention, in_degrees, first)
+    if compiled is not None:  # compiled kernels, or the paths below
+        return compiled
     single = _scalar.vector(angles)
     if single is not None:
         intrinsic = convention.to_intrinsic(single)
@@ -435,6 +443,9 @@ def quaternion_to_euler(
     in_degrees = check_flag(degrees, "degrees")
     first = check_flag(scalar_first, "scalar_first")
     warn_lock = check_flag(warn, "warn")
+    compiled = compiled_quaternion_angles(q, convention, first, in_degrees)
+    if compiled is not None:  # compiled kernels, or the paths below (which warn at lock)
+        return compiled
     entries = _one_quaternion_entries(q, first)
     if entries is not None:
         angles = entries_to_angles(entries, convention, in_degrees)

@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 import pytest
 from command_line import run_in_process
+from compiled import numpy_only
 from numpy.testing import assert_allclose
 from scipy.spatial.transform import Rotation
 
@@ -438,7 +439,8 @@ def test_convert_angles_checks_its_angles_once(monkeypatch: pytest.MonkeyPatch) 
         return original(value, name)
 
     monkeypatch.setattr(_validation, "as_float_array", counting)
-    convert_angles(np.zeros((10, 3)), "rose", "baker")
+    with numpy_only():  # the compiled kernels check the angles in C instead
+        convert_angles(np.zeros((10, 3)), "rose", "baker")
     assert calls == ["angles"]
 
 
