@@ -1,17 +1,210 @@
-/* Compiled kernels of the operations on rotation matrices: rotating points, inverting, composing, interpolating and integrating. Each loops over a batch, checks each rotation as
+/* Compiled kernels of the operations on rotation matrices: rotating points, inverting,
+ * composing, interpolating and integrating. Each loops over a batch, checks each rotation as
  * the Python-float path does and computes the same formulas (eulerlib/_compiled.h says how they
  * stay identical to the numpy-only results); it returns False to hand the whole call to the
  * array path. Private: called only by eulerlib's modules, through eulerlib/_compiled.py. */
 #include "_compiled.h"
 
+/* the most factors compose takes in one call; more are handed to the array path */
+#define MOST_FACTORS 32
+
+/* Reads `validate` (a bool) and `atol` (a float) from two arguments; -1 with an error set. */
+static int
+check_arguments(PyObject *validate_object, PyObject *atol_object, int *validate, double *atol)
+{
+    *validate = PyObject_IsTrue(validate_object);
+    if (*validate < 0) {
+        return -1;
+    }
+    *atol = PyFloat_AsDouble(atol_object);
+    if (*atol == -1.0 && PyErr_Occurred()) {
+        return -1;
+    }
+    return 0;
+}
+
+/* invert(out, R, validate, atol) -> bool
+ * The transposes (n, 3, 3) of matrices (n, 3, 3), as invert's swapaxes; False when one is not
+ * finite or, with validate, not a rotation within atol. */
+static PyObject *
+invert(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)module;
+    if (nargs != 4) {
+        PyErr_SetString(PyExc_TypeError, "invert takes 4 arguments");
+        return NULL;
+    }
+    int validate;
+    double atol;
+    if (check_arguments(args[2], args[3], &validate, &atol) < 0) {
+        return NULL;
+    }
+    Py_buffer out, R;
+    if (doubles(args[0], &out, 1) < 0) {
+        return NULL;
+    }
+    if (doubles(args[1], &R, 0) < 0) {
+        PyBuffer_Release(&out);
+        return NULL;
+    }
+    Py_ssize_t n = count_of(&R) / 9;
+    const double *in = R.buf;
+    double *e = out.buf;
+    int ok = count_of(&out) == 9 * n && count_of(&R) == 9 * n &&
+             all_rotations(in, n, validate, atol);
+    for (Py_ssize_t m = 0; ok && m < n; m++) {
+        const double *a = in + 9 * m;
+        double *t = e + 9 * m;
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 3; j++) {
+                t[3 * i + j] = a[3 * j + i];
+            }
+        }
+    }
+    PyBuffer_Release(&R);
+    PyBuffer_Release(&out);
+    return PyBool_FromLong(ok);
+}
+
+/* compose(out, validate, atol, *factors) -> bool
+ * The products (n, 3, 3), left to right and without negative zeros, of factors that each hold
+ * one matrix (used for every product) or n matrices (compose's product and += 0.0 per factor;
+ * a single factor is copied). False when a matrix is not finite or, with validate, not a
+ * rotation within atol, or when a factor holds another number of matrices. */
+static PyObject *
+compose(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)module;
+    if (nargs < 4) {
+        PyErr_SetString(PyExc_TypeError, "compose takes at least 4 arguments");
+        return NULL;
+    }
+    Py_ssize_t count = nargs - 3;
+    if (count > MOST_FACTORS) {
+        Py_RETURN_FALSE;
+    }
+    int validate;
+    double atol;
+    if (check_arguments(args[1], args[2], &validate, &atol) < 0) {
+        return NULL;
+    }
+    Py_buffer out, factor[MOST_FACTORS];
+    if (doubles(args[0], &out, 1) < 0) {
+        return NULL;
+    }
+    Py_ssize_t taken = 0;
+    for (; taken < count; taken++) {
+        if (doubles(args[3 + taken], &factor[taken], 0) < 0) {
+            break;
+        }
+    }
+    int failed = taken < count;
+    Py_ssize_t n = count_of(&out) / 9;
+    int ok = !failed && count_of(&out) == 9 * n;
+    const double *source[MOST_FACTORS];
+    Py_ssize_t step[MOST_FACTORS]; /* 9 for a factor of n matrices, 0 for one matrix */
+    for (Py_ssize_t k = 0; ok && k < count; k++) {
+        Py_ssize_t matrices = count_of(&factor[k]) / 9;
+        source[k] = factor[k].buf;
+        step[k] = matrices == n ? 9 : 0;
+        ok = count_of(&factor[k]) == 9 * matrices && (matrices == n || matrices == 1) &&
+             all_rotations(source[k], matrices, validate, atol);
+    }
+    double *e = out.buf;
+    for (Py_ssize_t m = 0; ok && m < n; m++) {
+        double *result = e + 9 * m;
+        if (count == 1) {
+            memcpy(result, source[0] + step[0] * m, 9 * sizeof(double));
+            continue;
+        }
+        double left[9], right[9];
+        memcpy(left, source[0] + step[0] * m, sizeof left);
+        for (Py_ssize_t k = 1; k < count; k++) {
+            if (k + 1 == count) {
+                product(left, source[k] + step[k] * m, result);
+            } else {
+                product(left, source[k] + step[k] * m, right);
+                memcpy(left, right, sizeof left);
+            }
+        }
+    }
+    for (Py_ssize_t k = 0; k < taken; k++) {
+        PyBuffer_Release(&factor[k]);
+    }
+    PyBuffer_Release(&out);
+    if (failed) {
+        return NULL;
+    }
+    return PyBool_FromLong(ok);
+}
+
+/* rotate_points(out, R, points, validate, atol) -> bool
+ * R p for n pairs (out (n, 3)) of one matrix or n matrices (n, 3, 3) and one point or n points
+ * (n, 3), each coordinate (r0 x + r1 y) + r2 z as rotate_points' _rotated. False when a number
+ * is not finite, a matrix is not a rotation within atol (with validate), a rotated point is not
+ * finite (the array path rescales it), or the counts do not match. */
+static PyObject *
+rotate_points(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)module;
+    if (nargs != 5) {
+        PyErr_SetString(PyExc_TypeError, "rotate_points takes 5 arguments");
+        return NULL;
+    }
+    int validate;
+    double atol;
+    if (check_arguments(args[3], args[4], &validate, &atol) < 0) {
+        return NULL;
+    }
+    Py_buffer out, R, points;
+    if (doubles(args[0], &out, 1) < 0) {
+        return NULL;
+    }
+    if (doubles(args[1], &R, 0) < 0) {
+        PyBuffer_Release(&out);
+        return NULL;
+    }
+    if (doubles(args[2], &points, 0) < 0) {
+        PyBuffer_Release(&R);
+        PyBuffer_Release(&out);
+        return NULL;
+    }
+    Py_ssize_t n = count_of(&out) / 3;
+    Py_ssize_t matrices = count_of(&R) / 9, vectors = count_of(&points) / 3;
+    const double *r = R.buf, *p = points.buf;
+    double *e = out.buf;
+    int ok = count_of(&out) == 3 * n && count_of(&R) == 9 * matrices &&
+             count_of(&points) == 3 * vectors && (matrices == n || matrices == 1) &&
+             (vectors == n || vectors == 1) && all_finite(p, 3 * vectors) &&
+             all_rotations(r, matrices, validate, atol);
+    Py_ssize_t r_step = matrices == n ? 9 : 0, p_step = vectors == n ? 3 : 0;
+    for (Py_ssize_t m = 0; ok && m < n; m++) {
+        const double *a = r + r_step * m, *v = p + p_step * m;
+        double *x = e + 3 * m;
+        for (int i = 0; i < 3; i++) {
+            double total = a[3 * i] * v[0];
+            total += a[3 * i + 1] * v[1];
+            x[i] = total + a[3 * i + 2] * v[2];
+        }
+        ok = all_finite(x, 3);
+    }
+    PyBuffer_Release(&points);
+    PyBuffer_Release(&R);
+    PyBuffer_Release(&out);
+    return PyBool_FromLong(ok);
+}
+
 static PyMethodDef methods[] = {
+    {"invert", (PyCFunction)(void (*)(void))invert, METH_FASTCALL, NULL},
+    {"compose", (PyCFunction)(void (*)(void))compose, METH_FASTCALL, NULL},
+    {"rotate_points", (PyCFunction)(void (*)(void))rotate_points, METH_FASTCALL, NULL},
     {NULL, NULL, 0, NULL},
 };
 
 static struct PyModuleDef module = {
     PyModuleDef_HEAD_INIT, "eulerlib._compiled_operations",
     "Compiled kernels of operations on rotation matrices (optional).", -1,
-    methods,
+    methods, NULL, NULL, NULL, NULL,
 };
 
 PyMODINIT_FUNC
