@@ -373,7 +373,8 @@ def compose(
     for n, factor in enumerate(entries[1:], start=2):
         last = n == len(entries)
         target = np.moveaxis(result.reshape(*work, 9), -1, 0) if last else np.empty((9, *work))
-        product(so_far, factor, target)
+        with np.errstate(over="ignore", invalid="ignore"):  # unchecked huge entries, as matmul
+            product(so_far, factor, target)
         target += 0.0
         so_far = target
     return result.reshape(*lead, 3, 3)
