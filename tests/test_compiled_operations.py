@@ -195,3 +195,20 @@ def test_the_kernels_take_plain_batches() -> None:
     assert not kernels.rotate_points(np.empty((6, 3)), R, np.array([0.0, np.inf, 0.0]), False, 0.0)
     assert not kernels.invert(out, 2.0 * R, True, 1e-6)
     assert kernels.invert(out, 2.0 * R, False, 1e-6)
+
+
+@pytest.mark.parametrize("atol", [1e-6, 1e-9, 0.01])
+@pytest.mark.parametrize("fraction", [0.2, 0.32, 0.34, 0.5, 0.66, 0.7, 1.2])
+def test_matrices_at_the_edge_of_the_tolerance(atol, fraction) -> None:
+    """Scaled by 1 + ε, a rotation's determinant is 1 + 3ε to first order: around ε = atol / 3
+    it is accepted or refused, by both paths alike."""
+    R = Rotation.random(4, rng=7).as_matrix() * (1.0 + fraction * atol)
+    R[0] = Rotation.random(1, rng=8).as_matrix()[0]
+    points = np.array([1.0, -2.0, 0.5])
+    for function, args in [
+        (eulerlib.invert, (R,)),
+        (eulerlib.compose, (R, R[0])),
+        (eulerlib.compose, (R[0], R, R)),
+        (eulerlib.rotate_points, (R, points)),
+    ]:
+        assert_same_outcome(function, *args, atol=atol)
