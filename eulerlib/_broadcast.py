@@ -79,3 +79,18 @@ def selected_index(selection: Selection, position: int) -> int:
     if isinstance(selection, slice):
         return int(selection.start) + position
     return int(selection[position])
+
+
+def common_lead(shapes: tuple[tuple[int, ...], ...]) -> tuple[int, ...] | None:
+    """The broadcast of leading axes when each operand holds either one item or as many as
+    the broadcast (so its items are in the broadcast's order): what the compiled kernels take.
+    None for any other broadcast and for shapes that do not broadcast."""
+    longest = max(shapes, key=len)
+    if all(shape == longest or not shape for shape in shapes):  # the usual cases, at once
+        return longest
+    try:
+        lead = np.broadcast_shapes(*shapes)
+    except ValueError:
+        return None
+    size = math.prod(lead)
+    return lead if all(math.prod(shape) in (1, size) for shape in shapes) else None

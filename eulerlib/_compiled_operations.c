@@ -194,10 +194,113 @@ rotate_points(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     return PyBool_FromLong(ok);
 }
 
+/* slerp_relative(relative, sine, R0, R1, validate, atol) -> bool
+ * First stage of slerp for n rotations (slerp_entries up to its arctangent): the canonical
+ * quaternion (w, x, y, z) of R0ᵀ R1 into relative (n, 4) and the length of its vector part
+ * into sine (n); R0 and R1 hold one matrix or n each. False when a matrix is not finite or,
+ * with validate, not a rotation within atol, or when the length needs rescaling. */
+static PyObject *
+slerp_relative(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)module;
+    if (nargs != 6) {
+        PyErr_SetString(PyExc_TypeError, "slerp_relative takes 6 arguments");
+        return NULL;
+    }
+    int validate;
+    double atol;
+    if (check_arguments(args[4], args[5], &validate, &atol) < 0) {
+        return NULL;
+    }
+    Py_buffer view[4];
+    int taken = 0;
+    for (; taken < 4; taken++) {
+        if (doubles(args[taken], &view[taken], taken < 2) < 0) {
+            break;
+        }
+    }
+    if (taken < 4) {
+        for (int k = 0; k < taken; k++) {
+            PyBuffer_Release(&view[k]);
+        }
+        return NULL;
+    }
+    Py_ssize_t n = count_of(&view[1]);
+    Py_ssize_t first = count_of(&view[2]) / 9, second = count_of(&view[3]) / 9;
+    const double *a = view[2].buf, *b = view[3].buf;
+    double *relative = view[0].buf, *sine = view[1].buf;
+    int ok = count_of(&view[0]) == 4 * n && count_of(&view[2]) == 9 * first &&
+             count_of(&view[3]) == 9 * second && (first == n || first == 1) &&
+             (second == n || second == 1) && all_rotations(a, first, validate, atol) &&
+             all_rotations(b, second, validate, atol);
+    Py_ssize_t a_step = first == n ? 9 : 0, b_step = second == n ? 9 : 0;
+    for (Py_ssize_t m = 0; ok && m < n; m++) {
+        double e[9], *q = relative + 4 * m;
+        transposed_product(a + a_step * m, b + b_step * m, e);
+        entries_to_quaternion(e, q);
+        double squared = squared_length(q + 1, 3);
+        ok = squared >= 0.0;
+        sine[m] = ok ? sqrt(squared) : 0.0;
+    }
+    for (int k = 0; k < 4; k++) {
+        PyBuffer_Release(&view[k]);
+    }
+    return PyBool_FromLong(ok);
+}
+
+/* slerp_turn(out, R0, relative, sine, tangent) -> bool
+ * Second stage of slerp (slerp_entries after its tangent): R0 Rot(n, t θ) (out (n, 3, 3))
+ * from the quaternions and lengths of the first stage and tangent = tan(t θ / 2) (n); R0
+ * holds one matrix or n. False when the turn's quaternion needs rescaling. */
+static PyObject *
+slerp_turn(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)module;
+    if (nargs != 5) {
+        PyErr_SetString(PyExc_TypeError, "slerp_turn takes 5 arguments");
+        return NULL;
+    }
+    Py_buffer view[5];
+    int taken = 0;
+    for (; taken < 5; taken++) {
+        if (doubles(args[taken], &view[taken], taken == 0) < 0) {
+            break;
+        }
+    }
+    if (taken < 5) {
+        for (int k = 0; k < taken; k++) {
+            PyBuffer_Release(&view[k]);
+        }
+        return NULL;
+    }
+    Py_ssize_t n = count_of(&view[3]), first = count_of(&view[1]) / 9;
+    const double *a = view[1].buf, *relative = view[2].buf, *sine = view[3].buf;
+    const double *tangent = view[4].buf;
+    double *e = view[0].buf;
+    int ok = count_of(&view[0]) == 9 * n && count_of(&view[1]) == 9 * first &&
+             (first == n || first == 1) && count_of(&view[2]) == 4 * n &&
+             count_of(&view[4]) == n;
+    Py_ssize_t a_step = first == n ? 9 : 0;
+    for (Py_ssize_t m = 0; ok && m < n; m++) {
+        const double *q = relative + 4 * m;
+        double factor = tangent[m] / sine[m], turn[9];
+        ok = quaternion_to_entries(1.0, q[1] * factor, q[2] * factor, q[3] * factor, turn);
+        if (ok) {
+            product(a + a_step * m, turn, e + 9 * m);
+        }
+    }
+    for (int k = 0; k < 5; k++) {
+        PyBuffer_Release(&view[k]);
+    }
+    return PyBool_FromLong(ok);
+}
+
 static PyMethodDef methods[] = {
     {"invert", (PyCFunction)(void (*)(void))invert, METH_FASTCALL, NULL},
     {"compose", (PyCFunction)(void (*)(void))compose, METH_FASTCALL, NULL},
     {"rotate_points", (PyCFunction)(void (*)(void))rotate_points, METH_FASTCALL, NULL},
+    {"slerp_relative", (PyCFunction)(void (*)(void))slerp_relative, METH_FASTCALL, NULL},
+    {"slerp_turn", (PyCFunction)(void (*)(void))slerp_turn, METH_FASTCALL, NULL},
     {NULL, NULL, 0, NULL},
 };
 

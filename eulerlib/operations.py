@@ -17,6 +17,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from eulerlib import _compiled, _scalar
 from eulerlib._blocks import block_slices
+from eulerlib._broadcast import common_lead
 from eulerlib._overflow import overflowed, rescaled
 from eulerlib._quaternion_kernels import product
 from eulerlib._scalar_kernels import Nine
@@ -91,7 +92,7 @@ def rotate_points(
     if kernels is not None and not check.repair:
         given_R, given_points = _compiled.batch(R, (3, 3)), _compiled.batch(points, (3,))
         if given_R is not None and given_points is not None:  # one pass in C, or the paths below
-            lead = _common_lead((given_R.shape[:-2], given_points.shape[:-1]))
+            lead = common_lead((given_R.shape[:-2], given_points.shape[:-1]))
             if lead is not None:
                 out = np.empty((*lead, 3))
                 if kernels.rotate_points(out, given_R, given_points, check.validate, check.atol):
@@ -158,21 +159,6 @@ def rotate_points(
             lead,
         )
     return rotated
-
-
-def _common_lead(shapes: tuple[tuple[int, ...], ...]) -> tuple[int, ...] | None:
-    """The broadcast of leading axes when each operand holds either one item or as many as
-    the broadcast (so its items are in the broadcast's order): what the compiled kernels take.
-    None for any other broadcast and for shapes that do not broadcast."""
-    longest = max(shapes, key=len)
-    if all(shape == longest or not shape for shape in shapes):  # the usual cases, at once
-        return longest
-    try:
-        lead = np.broadcast_shapes(*shapes)
-    except ValueError:
-        return None
-    size = math.prod(lead)
-    return lead if all(math.prod(shape) in (1, size) for shape in shapes) else None
 
 
 def _rotated_point(e: Nine, p: tuple[float, float, float]) -> tuple[float, float, float]:
@@ -341,7 +327,7 @@ def compose(
     if kernels is not None and not check.repair:
         given = [_compiled.batch(R, (3, 3)) for R in rotations]
         if all(g is not None for g in given):  # one pass in C, or the paths below
-            lead = _common_lead(tuple(g.shape[:-2] for g in given if g is not None))
+            lead = common_lead(tuple(g.shape[:-2] for g in given if g is not None))
             if lead is not None:
                 out = np.empty((*lead, 3, 3))
                 if kernels.compose(out, check.validate, check.atol, *given):

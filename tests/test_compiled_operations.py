@@ -150,7 +150,8 @@ def test_rotate_points(leads, data) -> None:
     if data.draw(st.booleans()):  # points of one scale, with every digit
         scale = data.draw(st.sampled_from([1.0, 1e-300, 1e-10, 1e10, 1e300, 1e308]))
         rng = np.random.default_rng(data.draw(st.integers(0, 2**32 - 1)))
-        points = rng.normal(size=points.shape) * scale
+        with np.errstate(over="ignore"):  # some overflow to infinity: refused alike
+            points = rng.normal(size=points.shape) * scale
     assert_same_outcome(eulerlib.rotate_points, R, points, **flags(data))
     assert_same_outcome(eulerlib.rotate_points, R, points[..., ::-1], **flags(data))  # a view
 
@@ -212,3 +213,53 @@ def test_matrices_at_the_edge_of_the_tolerance(atol, fraction) -> None:
         (eulerlib.rotate_points, (R, points)),
     ]:
         assert_same_outcome(function, *args, atol=atol)
+
+
+fractions = st.one_of(
+    st.floats(-0.5, 1.5),
+    st.floats(-1e6, 1e6),
+    st.sampled_from([0.0, -0.0, 0.5, 1.0, 2.0, -1.0, 1e300, -1e308, 1.7e308, 5e-324]),
+)
+
+
+def slerp_ends(data, leads):
+    """Start and end rotations: random, or the end a half turn from the start, the start itself,
+    or a tiny turn away (lengths that need rescaling), some spoiled."""
+    start = rotations(data, leads[0], exact=False)
+    end = rotations(data, leads[1], exact=False)
+    kind = data.draw(st.sampled_from(["random", "random", "half", "same", "tiny", "near half"]))
+    try:
+        np.broadcast_shapes(start.shape, end.shape)
+    except ValueError:
+        kind = "random"  # ends that do not broadcast: the array path's refusal
+    if kind != "random" and start.size and end.size:
+        axis = data.draw(st.sampled_from([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, -2.0, 2.0]]))
+        angle = {"half": np.pi, "same": 0.0, "tiny": 1e-160, "near half": np.pi - 1e-9}[kind]
+        turn = Rotation.from_rotvec(np.array(axis) / np.linalg.norm(axis) * angle).as_matrix()
+        end = np.broadcast_to(start @ turn, np.broadcast_shapes(start.shape, end.shape)).copy()
+    return start, end
+
+
+@settings(max_examples=examples(300))
+@given(leads=lead_pairs, data=st.data(), t_lead=st.sampled_from([None, (), (1,), (3,), (17,)]))
+def test_slerp(leads, data, t_lead) -> None:
+    start, end = slerp_ends(data, leads)
+    if t_lead is None:
+        t = data.draw(fractions)
+        if data.draw(st.booleans()):
+            t = data.draw(st.sampled_from([int(t) if abs(t) < 1e9 else 3, np.float64(t)]))
+    else:
+        t = data.draw(arrays(np.float64, t_lead, elements=fractions))
+    assert_same_outcome(eulerlib.slerp, start, end, t, **flags(data))
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+def test_slerp_refuses_alike(bad) -> None:
+    R = Rotation.random(3, rng=4).as_matrix()
+    assert_same_outcome(eulerlib.slerp, R, R[::-1].copy(), np.array([0.5, bad, 0.2]))
+    assert_same_outcome(eulerlib.slerp, R, R[0], bad)
+    spoiled = R.copy()
+    spoiled[1, 0, 0] = bad
+    assert_same_outcome(eulerlib.slerp, spoiled, R, 0.5)
+    assert_same_outcome(eulerlib.slerp, R, spoiled, 0.5, validate=False)
+    assert_same_outcome(eulerlib.slerp, R, R[::-1].copy(), 1e308)  # t θ / 2 above the largest float
