@@ -295,12 +295,145 @@ slerp_turn(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     return PyBool_FromLong(ok);
 }
 
+/* integration_turns(half, turns, R, omega, dt, degrees, validate, atol) -> bool
+ * First stage of integrate_angular_velocity for n steps (rotvec_to_entries up to its
+ * tangent): the rotation vector ω dt, its length and, with degrees, the whole quarter turns of
+ * the length into turns (n, 5) as (x, y, z, length, quarter), and the half angle whose tangent
+ * the second stage needs into half (n). R, omega and dt hold one item or n each. False when a
+ * number is not finite, a matrix is not a rotation within atol (with validate), ω dt
+ * overflows, or its length needs rescaling. */
+static PyObject *
+integration_turns(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)module;
+    if (nargs != 8) {
+        PyErr_SetString(PyExc_TypeError, "integration_turns takes 8 arguments");
+        return NULL;
+    }
+    int degrees = PyObject_IsTrue(args[5]), validate;
+    double atol;
+    if (degrees < 0 || check_arguments(args[6], args[7], &validate, &atol) < 0) {
+        return NULL;
+    }
+    Py_buffer view[5];
+    int taken = 0;
+    for (; taken < 5; taken++) {
+        if (doubles(args[taken], &view[taken], taken < 2) < 0) {
+            break;
+        }
+    }
+    if (taken < 5) {
+        for (int k = 0; k < taken; k++) {
+            PyBuffer_Release(&view[k]);
+        }
+        return NULL;
+    }
+    Py_ssize_t n = count_of(&view[0]);
+    Py_ssize_t matrices = count_of(&view[2]) / 9, rates = count_of(&view[3]) / 3;
+    Py_ssize_t steps = count_of(&view[4]);
+    double *half = view[0].buf, *turns = view[1].buf;
+    const double *R = view[2].buf, *omega = view[3].buf, *dt = view[4].buf;
+    int ok = count_of(&view[1]) == 5 * n && count_of(&view[2]) == 9 * matrices &&
+             count_of(&view[3]) == 3 * rates && (matrices == n || matrices == 1) &&
+             (rates == n || rates == 1) && (steps == n || steps == 1) &&
+             all_rotations(R, matrices, validate, atol);
+    Py_ssize_t omega_step = rates == n ? 3 : 0, dt_step = steps == n ? 1 : 0;
+    for (Py_ssize_t m = 0; ok && m < n; m++) {
+        const double *w = omega + omega_step * m;
+        double step = dt[dt_step * m], *v = turns + 5 * m;
+        v[0] = w[0] * step;
+        v[1] = w[1] * step;
+        v[2] = w[2] * step;
+        double squared = squared_length(v, 3); /* -1 for a NaN or an infinity too */
+        ok = squared >= 0.0;
+        double length = ok ? sqrt(squared) : 0.0;
+        v[3] = length;
+        if (degrees) { /* quarter_turns: length = k · 90° + r exactly */
+            double reduced = fmod(length, 360.0);
+            double quarter = nearbyint(reduced / 90.0);
+            v[4] = quarter;
+            half[m] = 0.5 * ((reduced - 90.0 * quarter) * (Py_MATH_PI / 180.0));
+        } else {
+            v[4] = 0.0;
+            half[m] = 0.5 * length;
+        }
+    }
+    for (int k = 0; k < 5; k++) {
+        PyBuffer_Release(&view[k]);
+    }
+    return PyBool_FromLong(ok);
+}
+
+/* integration_steps(out, R, turns, tangent, degrees, in_space) -> bool
+ * Second stage of integrate_angular_velocity (rotvec_to_entries after its tangent, then the
+ * product without negative zeros): R exp([ω dt]×), or exp([ω dt]×) R in_space, into out
+ * (n, 3, 3), from the first stage's turns and tangent = tan(half) (n); R holds one matrix or
+ * n. False when the step's quaternion needs rescaling. */
+static PyObject *
+integration_steps(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)module;
+    /* (cos, sin) of k · 45° times √2 for odd k, by k mod 4 (_scalar_kernels._HALF_QUARTER) */
+    static const double half_quarter[4][2] = {{1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}, {-1.0, 1.0}};
+    if (nargs != 6) {
+        PyErr_SetString(PyExc_TypeError, "integration_steps takes 6 arguments");
+        return NULL;
+    }
+    int degrees = PyObject_IsTrue(args[4]);
+    int in_space = degrees < 0 ? -1 : PyObject_IsTrue(args[5]);
+    if (in_space < 0) {
+        return NULL;
+    }
+    Py_buffer view[4];
+    int taken = 0;
+    for (; taken < 4; taken++) {
+        if (doubles(args[taken], &view[taken], taken == 0) < 0) {
+            break;
+        }
+    }
+    if (taken < 4) {
+        for (int k = 0; k < taken; k++) {
+            PyBuffer_Release(&view[k]);
+        }
+        return NULL;
+    }
+    Py_ssize_t n = count_of(&view[3]), matrices = count_of(&view[1]) / 9;
+    const double *R = view[1].buf, *turns = view[2].buf, *tangent = view[3].buf;
+    double *e = view[0].buf;
+    int ok = count_of(&view[0]) == 9 * n && count_of(&view[1]) == 9 * matrices &&
+             (matrices == n || matrices == 1) && count_of(&view[2]) == 5 * n;
+    Py_ssize_t R_step = matrices == n ? 9 : 0;
+    for (Py_ssize_t m = 0; ok && m < n; m++) {
+        const double *v = turns + 5 * m;
+        double a = 1.0, b = tangent[m];
+        if (degrees) {
+            const double *pair = half_quarter[(int)fmod(v[4], 4.0)];
+            double c = pair[0], s = pair[1], t = b;
+            a = (c - s * t) + 0.0;
+            b = (s + c * t) + 0.0;
+        }
+        double factor = b / v[3], step[9];
+        ok = quaternion_to_entries(a, v[0] * factor, v[1] * factor, v[2] * factor, step);
+        if (ok && in_space) {
+            product(step, R + R_step * m, e + 9 * m);
+        } else if (ok) {
+            product(R + R_step * m, step, e + 9 * m);
+        }
+    }
+    for (int k = 0; k < 4; k++) {
+        PyBuffer_Release(&view[k]);
+    }
+    return PyBool_FromLong(ok);
+}
+
 static PyMethodDef methods[] = {
     {"invert", (PyCFunction)(void (*)(void))invert, METH_FASTCALL, NULL},
     {"compose", (PyCFunction)(void (*)(void))compose, METH_FASTCALL, NULL},
     {"rotate_points", (PyCFunction)(void (*)(void))rotate_points, METH_FASTCALL, NULL},
     {"slerp_relative", (PyCFunction)(void (*)(void))slerp_relative, METH_FASTCALL, NULL},
     {"slerp_turn", (PyCFunction)(void (*)(void))slerp_turn, METH_FASTCALL, NULL},
+    {"integration_turns", (PyCFunction)(void (*)(void))integration_turns, METH_FASTCALL, NULL},
+    {"integration_steps", (PyCFunction)(void (*)(void))integration_steps, METH_FASTCALL, NULL},
     {NULL, NULL, 0, NULL},
 };
 

@@ -86,7 +86,7 @@ def outcome(function, *args, **kwargs):
         warnings.simplefilter("always")
         try:
             result = function(*args, **kwargs)
-        except (ValueError, TypeError) as error:
+        except Exception as error:  # any error: both paths must raise it alike
             result = (type(error), str(error))
     return result, [(w.category, str(w.message)) for w in caught]
 
@@ -241,9 +241,14 @@ def slerp_ends(data, leads):
 
 
 @settings(max_examples=examples(300))
-@given(leads=lead_pairs, data=st.data(), t_lead=st.sampled_from([None, (), (1,), (3,), (17,)]))
+@given(
+    leads=lead_pairs,
+    data=st.data(),
+    t_lead=st.sampled_from([None, None, "same", (), (1,), (3,), (17,)]),
+)
 def test_slerp(leads, data, t_lead) -> None:
     start, end = slerp_ends(data, leads)
+    t_lead = leads[0] if t_lead == "same" else t_lead
     if t_lead is None:
         t = data.draw(fractions)
         if data.draw(st.booleans()):
@@ -263,3 +268,78 @@ def test_slerp_refuses_alike(bad) -> None:
     assert_same_outcome(eulerlib.slerp, spoiled, R, 0.5)
     assert_same_outcome(eulerlib.slerp, R, spoiled, 0.5, validate=False)
     assert_same_outcome(eulerlib.slerp, R, R[::-1].copy(), 1e308)  # t θ / 2 above the largest float
+    for scale in (2.0, 1.0 + 1e-7, 1.0 + 4e-7):  # refused, or accepted within atol, alike
+        for validate in (True, False):
+            assert_same_outcome(eulerlib.slerp, scale * R, R, 0.5, validate=validate)
+            assert_same_outcome(eulerlib.slerp, R, scale * R, 0.5, validate=validate)
+
+
+rates = st.one_of(
+    st.floats(-10.0, 10.0),
+    st.floats(-1e-160, 1e-160),
+    st.floats(-1e200, 1e200),
+    st.sampled_from([0.0, -0.0, 90.0, -180.0, 270.0, 360.0, 45.0, 1e-300, 1.7e308]),
+)
+step_lengths = st.one_of(
+    st.floats(-2.0, 2.0),
+    st.sampled_from([0.0, 1.0, -1.0, 0.5, 1e-10, 1e10, 1e300, -1e308, 5e-324]),
+)
+
+
+@settings(max_examples=examples(300))
+@given(
+    leads=lead_pairs,
+    data=st.data(),
+    dt_lead=st.sampled_from([None, None, "same", (), (1,), (3,), (17,)]),
+    frame=st.sampled_from(["body", "space", "Space"]),
+    degrees=st.booleans(),
+)
+def test_integrate_angular_velocity(leads, data, dt_lead, frame, degrees) -> None:
+    R = rotations(data, leads[0], exact=False)
+    omega = data.draw(arrays(np.float64, (*leads[1], 3), elements=rates))
+    if data.draw(st.booleans()):  # rates of one scale, with every digit
+        scale = data.draw(st.sampled_from([1.0, 1e-200, 1e-3, 100.0, 1e200]))
+        rng = np.random.default_rng(data.draw(st.integers(0, 2**32 - 1)))
+        omega = rng.normal(size=omega.shape) * scale
+    if dt_lead is None:
+        dt = data.draw(step_lengths)
+        if data.draw(st.booleans()):
+            dt = data.draw(st.sampled_from([1, 2, np.float64(dt)]))
+    else:
+        dt_lead = leads[0] if dt_lead == "same" else dt_lead
+        dt = data.draw(arrays(np.float64, dt_lead, elements=step_lengths))
+    assert_same_outcome(
+        eulerlib.integrate_angular_velocity,
+        R,
+        omega,
+        dt,
+        frame=frame,
+        degrees=degrees,
+        **flags(data),
+    )
+
+
+@pytest.mark.parametrize("degrees", [False, True])
+def test_integration_of_quarter_turns_and_overflow_alike(degrees) -> None:
+    R = Rotation.random(4, rng=9).as_matrix()
+    omega = np.array([[90.0, 0.0, 0.0], [0.0, -180.0, 0.0], [0.0, 0.0, 45.0], [45.0, 45.0, 0.0]])
+    for dt in (1.0, 3.0, 5.0, -1.0, np.array([1.0, 2.0, 3.0, 4.0]), 1e300, 1e306, 1e308):
+        for frame in ("body", "space"):
+            assert_same_outcome(
+                eulerlib.integrate_angular_velocity, R, omega, dt, frame=frame, degrees=degrees
+            )
+            assert_same_outcome(
+                eulerlib.integrate_angular_velocity, R[0], omega, dt, frame=frame, degrees=degrees
+            )
+    huge = np.full((4, 3), 1e200)  # ω dt overflows, or its length does
+    for dt in (1e200, 1e108, 1.0):
+        assert_same_outcome(eulerlib.integrate_angular_velocity, R, huge, dt, degrees=degrees)
+    for spoiled in (2.0 * R, R + 1e-6, R[::-1] * [1.0, 1.0, -1.0]):
+        for validate in (True, False):
+            assert_same_outcome(
+                eulerlib.integrate_angular_velocity, spoiled, omega, 0.5, validate=validate
+            )
+    nan = omega.copy()
+    nan[2, 1] = np.nan
+    assert_same_outcome(eulerlib.integrate_angular_velocity, R, nan, 1.0, degrees=degrees)
+    assert_same_outcome(eulerlib.integrate_angular_velocity, R, omega, np.inf, degrees=degrees)
