@@ -94,3 +94,9 @@ def common_lead(shapes: tuple[tuple[int, ...], ...]) -> tuple[int, ...] | None:
         return None
     size = math.prod(lead)
     return lead if all(math.prod(shape) in (1, size) for shape in shapes) else None
+
+
+def block_part(items: NDArray[np.float64], block: slice) -> NDArray[np.float64]:
+    """The items of one operand for a block of a :func:`common_lead` broadcast: its one item
+    for every block, or its slice."""
+    return items if len(items) == 1 else items[block]

@@ -38,7 +38,14 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib import _compiled, _scalar
-from eulerlib._broadcast import broadcast_blocks, broadcast_shape, common_lead, selected_index
+from eulerlib._blocks import BLOCK_SIZE, block_slices
+from eulerlib._broadcast import (
+    block_part,
+    broadcast_blocks,
+    broadcast_shape,
+    common_lead,
+    selected_index,
+)
 from eulerlib._length_kernels import lengths
 from eulerlib._quaternion_kernels import product, rotvecs_to_entries
 from eulerlib._scalar_kernels import product as product_of_two
@@ -53,7 +60,6 @@ from eulerlib._validation import (
     as_vectors,
     check_choice,
     check_flag,
-    matrix_entries,
     rotation_check,
 )
 from eulerlib.angular_velocity import FRAMES
@@ -167,11 +173,14 @@ def integrate_angular_velocity(
         length = lengths(rows)
         refuse_overlong(length, "omega * dt", shape, block)
         step = rotvecs_to_entries(rows, in_degrees, length)
-        start = matrix_entries(flat_R[on_R])
+        start = flat_R[on_R].reshape(-1, 9).T  # rows of entries, a view where on_R is a slice
         # entry by entry in a fixed order, as the path of one step and the compiled kernel
         # (a BLAS product may add in another order, or fuse a multiply with an add)
         target = out_entries[:, block]
-        product(*((step, start) if in_space else (start, step)), target)
+        if in_space:
+            product(step, start, target)
+        else:
+            product(start, step, target)
         target += 0.0  # no negative zeros
     return out.reshape(*shape, 3, 3)
 
@@ -200,15 +209,30 @@ def _compiled_steps(
     if lead is None:
         return None
     count = math.prod(lead)
-    half, turns = np.empty(count), np.empty((count, 5))
-    taken = kernels.integration_turns(
-        half, turns, matrices, rates, steps, in_degrees, check.validate, check.atol
-    )
-    if not taken:
-        return None
+    flat_R, flat_omega = matrices.reshape(-1, 3, 3), rates.reshape(-1, 3)
+    flat_dt = steps.reshape(-1)
     out = np.empty((*lead, 3, 3))
-    if not kernels.integration_steps(out, matrices, turns, np.tan(half), in_degrees, in_space):
-        return None
+    flat_out = out.reshape(-1, 3, 3)
+    size = min(count, BLOCK_SIZE)  # what the stages hold between them: one block
+    half_rows, turn_rows = np.empty(size), np.empty((size, 5))
+    for block in block_slices(count):
+        size = block.stop - block.start
+        half, turns = half_rows[:size], turn_rows[:size]
+        start = block_part(flat_R, block)
+        taken = kernels.integration_turns(
+            half,
+            turns,
+            start,
+            block_part(flat_omega, block),
+            block_part(flat_dt, block),
+            in_degrees,
+            check.validate,
+            check.atol,
+        )
+        if not taken or not kernels.integration_steps(
+            flat_out[block], start, turns, np.tan(half), in_degrees, in_space
+        ):
+            return None
     return out
 
 

@@ -34,8 +34,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from eulerlib import _compiled, _scalar
-from eulerlib._blocks import BLOCK_SIZE
-from eulerlib._broadcast import broadcast_blocks, broadcast_shape, common_lead
+from eulerlib._blocks import BLOCK_SIZE, block_slices
+from eulerlib._broadcast import block_part, broadcast_blocks, broadcast_shape, common_lead
 from eulerlib._length_kernels import TINY, lengths
 from eulerlib._quaternion_kernels import (
     entries_to_quaternions,
@@ -181,16 +181,25 @@ def _compiled_slerp(
     if lead is None:
         return None
     count = math.prod(lead)
-    relative, sine = np.empty((count, 4)), np.empty(count)
-    if not kernels.slerp_relative(relative, sine, first, second, check.validate, check.atol):
-        return None
-    with np.errstate(over="ignore", invalid="ignore"):  # refused by the array path, below
-        half_turn = np.arctan2(sine, relative[:, 0]) * np.reshape(fractions, -1)
-    if not math.isfinite(float(np.sum(half_turn))):
-        return None
+    flat0, flat1 = first.reshape(-1, 3, 3), second.reshape(-1, 3, 3)
+    flat_t = np.reshape(fractions, -1)
     out = np.empty((*lead, 3, 3))
-    if not kernels.slerp_turn(out, first, relative, sine, np.tan(half_turn)):
-        return None
+    flat_out = out.reshape(-1, 3, 3)
+    size = min(count, BLOCK_SIZE)  # what the stages hold between them: one block
+    relative_rows, sine_rows = np.empty((size, 4)), np.empty(size)
+    for block in block_slices(count):
+        size = block.stop - block.start
+        relative, sine = relative_rows[:size], sine_rows[:size]
+        start = block_part(flat0, block)
+        end = block_part(flat1, block)
+        if not kernels.slerp_relative(relative, sine, start, end, check.validate, check.atol):
+            return None
+        with np.errstate(over="ignore", invalid="ignore"):  # refused by the array path
+            half_turn = np.arctan2(sine, relative[:, 0]) * block_part(flat_t, block)
+        if not math.isfinite(float(np.sum(half_turn))):
+            return None
+        if not kernels.slerp_turn(flat_out[block], start, relative, sine, np.tan(half_turn)):
+            return None
     return out
 
 
