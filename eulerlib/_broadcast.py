@@ -85,8 +85,11 @@ def common_lead(shapes: tuple[tuple[int, ...], ...]) -> tuple[int, ...] | None:
     """The broadcast of leading axes when each operand holds either one item or as many as
     the broadcast (so its items are in the broadcast's order): what the compiled kernels take.
     None for any other broadcast and for shapes that do not broadcast."""
+    first = shapes[0]
+    if shapes.count(first) == len(shapes):  # the usual cases, at once: all alike,
+        return first
     longest = max(shapes, key=len)
-    if all(shape == longest or not shape for shape in shapes):  # the usual cases, at once
+    if all(shape == longest or not shape for shape in shapes):  # or a single one with a batch
         return longest
     try:
         lead = np.broadcast_shapes(*shapes)

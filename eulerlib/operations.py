@@ -326,8 +326,9 @@ def compose(
     kernels = _compiled.operations
     if kernels is not None and not check.repair:
         given = [_compiled.batch(R, (3, 3)) for R in rotations]
-        if all(g is not None for g in given):  # one pass in C, or the paths below
-            lead = common_lead(tuple(g.shape[:-2] for g in given if g is not None))
+        shapes = tuple(g.shape[:-2] if g is not None else None for g in given)
+        if None not in shapes:  # one pass in C, or the paths below
+            lead = common_lead(shapes)  # type: ignore[arg-type]
             if lead is not None:
                 out = np.empty((*lead, 3, 3))
                 if kernels.compose(out, check.validate, check.atol, *given):
@@ -344,8 +345,8 @@ def compose(
         lead = np.broadcast_shapes(*(m.shape[:-2] for m in matrices))
         np.broadcast_shapes(*(m.shape for m in matrices))
     except ValueError:
-        shapes = ", ".join(str(m.shape) for m in matrices)
-        raise ValueError(f"the rotations do not broadcast together: shapes {shapes}") from None
+        listed = ", ".join(str(m.shape) for m in matrices)
+        raise ValueError(f"the rotations do not broadcast together: shapes {listed}") from None
     if len(matrices) == 1:
         copied: NDArray[np.float64] = matrices[0].copy()
         return copied

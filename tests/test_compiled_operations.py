@@ -236,7 +236,9 @@ def slerp_ends(data, leads):
         axis = data.draw(st.sampled_from([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [1.0, -2.0, 2.0]]))
         angle = {"half": np.pi, "same": 0.0, "tiny": 1e-160, "near half": np.pi - 1e-9}[kind]
         turn = Rotation.from_rotvec(np.array(axis) / np.linalg.norm(axis) * angle).as_matrix()
-        end = np.broadcast_to(start @ turn, np.broadcast_shapes(start.shape, end.shape)).copy()
+        with np.errstate(over="ignore", invalid="ignore"):  # a spoiled start: refused alike
+            turned = start @ turn
+        end = np.broadcast_to(turned, np.broadcast_shapes(start.shape, end.shape)).copy()
     return start, end
 
 
