@@ -248,6 +248,40 @@ slerp_relative(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     return PyBool_FromLong(ok);
 }
 
+/* slerp_half_turns(angle, t) -> bool
+ * The half turns t θ / 2 of slerp (slerp_entries' arctangent times t), in place of the angles
+ * θ / 2 (n); t holds one fraction or n. False when one is not finite: t was not, or the
+ * product overflowed (the array path refuses it). */
+static PyObject *
+slerp_half_turns(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)module;
+    if (nargs != 2) {
+        PyErr_SetString(PyExc_TypeError, "slerp_half_turns takes 2 arguments");
+        return NULL;
+    }
+    Py_buffer angle, t;
+    if (doubles(args[0], &angle, 1) < 0) {
+        return NULL;
+    }
+    if (doubles(args[1], &t, 0) < 0) {
+        PyBuffer_Release(&angle);
+        return NULL;
+    }
+    Py_ssize_t n = count_of(&angle), fractions = count_of(&t);
+    double *half = angle.buf;
+    const double *by = t.buf;
+    int ok = fractions == n || fractions == 1;
+    Py_ssize_t step = fractions == n ? 1 : 0;
+    for (Py_ssize_t m = 0; ok && m < n; m++) {
+        half[m] = half[m] * by[step * m];
+        ok = half[m] - half[m] == 0.0;
+    }
+    PyBuffer_Release(&t);
+    PyBuffer_Release(&angle);
+    return PyBool_FromLong(ok);
+}
+
 /* slerp_turn(out, R0, relative, sine, tangent) -> bool
  * Second stage of slerp (slerp_entries after its tangent): R0 Rot(n, t θ) (out (n, 3, 3))
  * from the quaternions and lengths of the first stage and tangent = tan(t θ / 2) (n); R0
@@ -431,6 +465,7 @@ static PyMethodDef methods[] = {
     {"compose", (PyCFunction)(void (*)(void))compose, METH_FASTCALL, NULL},
     {"rotate_points", (PyCFunction)(void (*)(void))rotate_points, METH_FASTCALL, NULL},
     {"slerp_relative", (PyCFunction)(void (*)(void))slerp_relative, METH_FASTCALL, NULL},
+    {"slerp_half_turns", (PyCFunction)(void (*)(void))slerp_half_turns, METH_FASTCALL, NULL},
     {"slerp_turn", (PyCFunction)(void (*)(void))slerp_turn, METH_FASTCALL, NULL},
     {"integration_turns", (PyCFunction)(void (*)(void))integration_turns, METH_FASTCALL, NULL},
     {"integration_steps", (PyCFunction)(void (*)(void))integration_steps, METH_FASTCALL, NULL},

@@ -165,7 +165,7 @@ def slerp(
 def _compiled_slerp(
     R0: ArrayLike, R1: ArrayLike, t: ArrayLike, check: RotationCheck
 ) -> NDArray[np.float64] | None:
-    """slerp in two compiled stages around numpy's arctangent and tangent (the body of
+    """slerp in compiled stages around numpy's arctangent and tangent (the body of
     :func:`eulerlib._scalar_kernels.slerp_entries` for a whole batch), or None for what the
     kernels do not take: the paths of :func:`slerp` then give the result or the refusal."""
     kernels = _compiled.operations
@@ -182,7 +182,7 @@ def _compiled_slerp(
         return None
     count = math.prod(lead)
     flat0, flat1 = first.reshape(-1, 3, 3), second.reshape(-1, 3, 3)
-    flat_t = np.reshape(fractions, -1)
+    flat_t = np.array([number]) if number is not None else np.reshape(fractions, -1)
     out = np.empty((*lead, 3, 3))
     flat_out = out.reshape(-1, 3, 3)
     size = min(count, BLOCK_SIZE)  # what the stages hold between them: one block
@@ -194,10 +194,9 @@ def _compiled_slerp(
         end = block_part(flat1, block)
         if not kernels.slerp_relative(relative, sine, start, end, check.validate, check.atol):
             return None
-        with np.errstate(over="ignore", invalid="ignore"):  # refused by the array path
-            half_turn = np.arctan2(sine, relative[:, 0]) * block_part(flat_t, block)
-        if not math.isfinite(float(np.sum(half_turn))):
-            return None
+        half_turn = np.arctan2(sine, relative[:, 0])
+        if not kernels.slerp_half_turns(half_turn, block_part(flat_t, block)):
+            return None  # t θ / 2 is not a number: refused by the array path
         if not kernels.slerp_turn(flat_out[block], start, relative, sine, np.tan(half_turn)):
             return None
     return out

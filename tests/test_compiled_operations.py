@@ -265,6 +265,9 @@ def test_slerp_refuses_alike(bad) -> None:
     R = Rotation.random(3, rng=4).as_matrix()
     assert_same_outcome(eulerlib.slerp, R, R[::-1].copy(), np.array([0.5, bad, 0.2]))
     assert_same_outcome(eulerlib.slerp, R, R[0], bad)
+    # one pair: numpy's tangent of one number warns of an infinity, of several it does not
+    assert_same_outcome(eulerlib.slerp, R[0], R[1], np.array([bad]))
+    assert_same_outcome(eulerlib.slerp, R[0], R[1], np.array([1e308]))
     spoiled = R.copy()
     spoiled[1, 0, 0] = bad
     assert_same_outcome(eulerlib.slerp, spoiled, R, 0.5)
