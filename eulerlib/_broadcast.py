@@ -79,3 +79,27 @@ def selected_index(selection: Selection, position: int) -> int:
     if isinstance(selection, slice):
         return int(selection.start) + position
     return int(selection[position])
+
+
+def common_lead(shapes: tuple[tuple[int, ...], ...]) -> tuple[int, ...] | None:
+    """The broadcast of leading axes when each operand holds either one item or as many as
+    the broadcast (so its items are in the broadcast's order): what the compiled kernels take.
+    None for any other broadcast and for shapes that do not broadcast."""
+    first = shapes[0]
+    if shapes.count(first) == len(shapes):  # the usual cases, at once: all alike,
+        return first
+    longest = max(shapes, key=len)
+    if all(shape == longest or not shape for shape in shapes):  # or a single one with a batch
+        return longest
+    try:
+        lead = np.broadcast_shapes(*shapes)
+    except ValueError:
+        return None
+    size = math.prod(lead)
+    return lead if all(math.prod(shape) in (1, size) for shape in shapes) else None
+
+
+def block_part(items: NDArray[np.float64], block: slice) -> NDArray[np.float64]:
+    """The items of one operand for a block of a :func:`common_lead` broadcast: its one item
+    for every block, or its slice."""
+    return items if len(items) == 1 else items[block]

@@ -267,18 +267,19 @@ class RotationCheck(NamedTuple):
     advice: str = "pass repair=True to use the nearest rotation instead"
 
 
+#: The keywords' defaults, checked (what :func:`rotation_check` gives for them).
+_DEFAULT_CHECK = RotationCheck(True, False, ROTATION_ATOL)
+
+
 def rotation_check(validate: object, repair: object, atol: object) -> RotationCheck:
     """Check the ``validate``, ``repair`` and ``atol`` keywords of a public function."""
-    if validate is True and repair is False and atol is ROTATION_ATOL:
-        return _DEFAULT_CHECK  # the defaults, checked once: a call on one rotation is short
+    if validate is True and repair is False and atol == ROTATION_ATOL and type(atol) is float:
+        return _DEFAULT_CHECK  # the defaults: what most calls pass, without the checks' cost
     return RotationCheck(
         check_flag(validate, "validate"),
         check_flag(repair, "repair"),
         check_tolerance(atol, "atol"),
     )
-
-
-_DEFAULT_CHECK = RotationCheck(True, False, ROTATION_ATOL)
 
 
 def matrix_entries(R: NDArray[np.float64]) -> NDArray[np.float64]:

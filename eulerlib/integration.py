@@ -37,14 +37,23 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib import _scalar
-from eulerlib._broadcast import broadcast_blocks, broadcast_shape, selected_index
+from eulerlib import _compiled, _scalar
+from eulerlib._blocks import BLOCK_SIZE, block_slices
+from eulerlib._broadcast import (
+    block_part,
+    broadcast_blocks,
+    broadcast_shape,
+    common_lead,
+    selected_index,
+)
 from eulerlib._length_kernels import lengths
-from eulerlib._quaternion_kernels import rotvecs_to_entries
+from eulerlib._quaternion_kernels import product, rotvecs_to_entries
+from eulerlib._scalar_kernels import product as product_of_two
 from eulerlib._scalar_kernels import rotvec_to_entries
 from eulerlib._unit import refuse_overlong
 from eulerlib._validation import (
     ROTATION_ATOL,
+    RotationCheck,
     _index_text,
     as_float_array,
     as_rotations,
@@ -133,6 +142,10 @@ def integrate_angular_velocity(
     in_space = check_choice(frame, "frame", FRAMES) == "space"
     in_degrees = check_flag(degrees, "degrees")
     check = rotation_check(validate, repair, atol)
+    if _compiled.operations is not None and not check.repair:
+        compiled = _compiled_steps(R, omega, dt, in_degrees, in_space, check)
+        if compiled is not None:
+            return compiled
     one_R, one_omega, one_dt = _scalar.rotation(R, check), _scalar.vector(omega), None
     if one_R is not None and one_omega is not None:
         one_dt = _scalar.number(dt)
@@ -141,13 +154,8 @@ def integrate_angular_velocity(
             turn = (one_omega[0] * one_dt, one_omega[1] * one_dt, one_omega[2] * one_dt)
         one_step = rotvec_to_entries(turn, in_degrees) if _scalar.finite(turn) else None
         if one_step is not None:  # one step in Python floats, then the same product
-            step = _scalar.as_array(one_step, (1, 3, 3))
-            start = _scalar.as_array(one_R, (1, 3, 3))
-            single: NDArray[np.float64] = (
-                np.matmul(step, start) if in_space else np.matmul(start, step)
-            )
-            result: NDArray[np.float64] = single[0]
-            return result
+            pair = (one_step, one_R) if in_space else (one_R, one_step)
+            return _scalar.as_array(product_of_two(*pair), (3, 3))
     matrices = as_rotations(R, "R", check)
     rates = as_vectors(omega, "omega")
     steps = as_float_array(dt, "dt")
@@ -156,6 +164,7 @@ def integrate_angular_velocity(
     flat_R = matrices.reshape(-1, 3, 3)
     flat_omega, flat_dt = rates.reshape(-1, 3), steps.reshape(-1)
     out = np.empty((math.prod(shape), 3, 3))
+    out_entries = out.reshape(-1, 9).T  # (9, n), a view
     for block, (on_R, on_omega, on_dt) in broadcast_blocks(shape, leads):
         with np.errstate(over="ignore", invalid="ignore"):
             turns = flat_omega[on_omega].T * flat_dt[on_dt]  # rotation vectors, shape (3, n)
@@ -163,11 +172,68 @@ def integrate_angular_velocity(
         rows = np.ascontiguousarray(turns)
         length = lengths(rows)
         refuse_overlong(length, "omega * dt", shape, block)
-        entries = rotvecs_to_entries(rows, in_degrees, length)
-        step = entries.T.reshape(-1, 3, 3)
-        start = flat_R[on_R]
-        out[block] = np.matmul(step, start) if in_space else np.matmul(start, step)
+        step = rotvecs_to_entries(rows, in_degrees, length)
+        start = flat_R[on_R].reshape(-1, 9).T  # rows of entries, a view where on_R is a slice
+        # entry by entry in a fixed order, as the path of one step and the compiled kernel
+        # (a BLAS product may add in another order, or fuse a multiply with an add)
+        target = out_entries[:, block]
+        if in_space:
+            product(step, start, target)
+        else:
+            product(start, step, target)
+        target += 0.0  # no negative zeros
     return out.reshape(*shape, 3, 3)
+
+
+def _compiled_steps(
+    R: ArrayLike,
+    omega: ArrayLike,
+    dt: ArrayLike,
+    in_degrees: bool,
+    in_space: bool,
+    check: RotationCheck,
+) -> NDArray[np.float64] | None:
+    """The steps in two compiled stages around numpy's tangent (the path of one step for a
+    whole batch), or None for what the kernels do not take: the paths of
+    :func:`integrate_angular_velocity` then give the result or the refusal."""
+    kernels = _compiled.operations
+    matrices, rates = _compiled.batch(R, (3, 3)), _compiled.batch(omega, (3,))
+    if matrices is None or rates is None:
+        return None
+    number = _scalar.number(dt)
+    steps = np.array([number]) if number is not None else _compiled.batch(dt, ())
+    if steps is None:
+        return None
+    dt_shape = () if number is not None else steps.shape
+    lead = common_lead((matrices.shape[:-2], rates.shape[:-1], dt_shape))
+    if lead is None:
+        return None
+    count = math.prod(lead)
+    flat_R, flat_omega = matrices.reshape(-1, 3, 3), rates.reshape(-1, 3)
+    flat_dt = steps.reshape(-1)
+    out = np.empty((*lead, 3, 3))
+    flat_out = out.reshape(-1, 3, 3)
+    size = min(count, BLOCK_SIZE)  # what the stages hold between them: one block
+    half_rows, turn_rows = np.empty(size), np.empty((size, 5))
+    for block in block_slices(count):
+        size = block.stop - block.start
+        half, turns = half_rows[:size], turn_rows[:size]
+        start = block_part(flat_R, block)
+        taken = kernels.integration_turns(
+            half,
+            turns,
+            start,
+            block_part(flat_omega, block),
+            block_part(flat_dt, block),
+            in_degrees,
+            check.validate,
+            check.atol,
+        )
+        if not taken or not kernels.integration_steps(
+            flat_out[block], start, turns, np.tan(half), in_degrees, in_space
+        ):
+            return None
+    return out
 
 
 def _refuse_overflow(

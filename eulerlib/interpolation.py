@@ -33,9 +33,9 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib import _scalar
-from eulerlib._blocks import BLOCK_SIZE
-from eulerlib._broadcast import broadcast_blocks, broadcast_shape
+from eulerlib import _compiled, _scalar
+from eulerlib._blocks import BLOCK_SIZE, block_slices
+from eulerlib._broadcast import block_part, broadcast_blocks, broadcast_shape, common_lead
 from eulerlib._length_kernels import TINY, lengths
 from eulerlib._quaternion_kernels import (
     entries_to_quaternions,
@@ -46,6 +46,7 @@ from eulerlib._quaternion_kernels import (
 from eulerlib._scalar_kernels import slerp_entries
 from eulerlib._validation import (
     ROTATION_ATOL,
+    RotationCheck,
     _index_text,
     as_float_array,
     as_rotations,
@@ -120,6 +121,10 @@ def slerp(
     array(180.)
     """
     check = rotation_check(validate, repair, atol)
+    if _compiled.operations is not None and not check.repair:
+        compiled = _compiled_slerp(R0, R1, t, check)
+        if compiled is not None:
+            return compiled
     one_first, one_t = _scalar.rotation(R0, check), _scalar.number(t)
     one_second = None if one_first is None else _scalar.rotation(R1, check)
     if one_first is not None and one_second is not None and one_t is not None:
@@ -155,6 +160,46 @@ def slerp(
         product(start, turn, out[block].T)
         out[block] += 0.0  # no negative zeros
     return out.reshape(*shape, 3, 3)
+
+
+def _compiled_slerp(
+    R0: ArrayLike, R1: ArrayLike, t: ArrayLike, check: RotationCheck
+) -> NDArray[np.float64] | None:
+    """slerp in compiled stages around numpy's arctangent and tangent (the body of
+    :func:`eulerlib._scalar_kernels.slerp_entries` for a whole batch), or None for what the
+    kernels do not take: the paths of :func:`slerp` then give the result or the refusal."""
+    kernels = _compiled.operations
+    first, second = _compiled.batch(R0, (3, 3)), _compiled.batch(R1, (3, 3))
+    if first is None or second is None:
+        return None
+    number = _scalar.number(t)
+    fractions = number if number is not None else _compiled.batch(t, ())
+    if fractions is None:
+        return None
+    t_shape = () if number is not None else np.shape(fractions)
+    lead = common_lead((first.shape[:-2], second.shape[:-2], t_shape))
+    if lead is None:
+        return None
+    count = math.prod(lead)
+    flat0, flat1 = first.reshape(-1, 3, 3), second.reshape(-1, 3, 3)
+    flat_t = np.array([number]) if number is not None else np.reshape(fractions, -1)
+    out = np.empty((*lead, 3, 3))
+    flat_out = out.reshape(-1, 3, 3)
+    size = min(count, BLOCK_SIZE)  # what the stages hold between them: one block
+    relative_rows, sine_rows = np.empty((size, 4)), np.empty(size)
+    for block in block_slices(count):
+        size = block.stop - block.start
+        relative, sine = relative_rows[:size], sine_rows[:size]
+        start = block_part(flat0, block)
+        end = block_part(flat1, block)
+        if not kernels.slerp_relative(relative, sine, start, end, check.validate, check.atol):
+            return None
+        half_turn = np.arctan2(sine, relative[:, 0])
+        if not kernels.slerp_half_turns(half_turn, block_part(flat_t, block)):
+            return None  # t θ / 2 is not a number: refused by the array path
+        if not kernels.slerp_turn(flat_out[block], start, relative, sine, np.tan(half_turn)):
+            return None
+    return out
 
 
 def _refuse_overflow(half_turn: NDArray[np.float64], shape: tuple[int, ...], offset: int) -> None:

@@ -11,14 +11,17 @@ takes the same ``validate``, ``repair`` and ``atol`` keywords.
 from __future__ import annotations
 
 import math
-from functools import reduce
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from eulerlib import _scalar
+from eulerlib import _compiled, _scalar
 from eulerlib._blocks import block_slices
+from eulerlib._broadcast import common_lead
 from eulerlib._overflow import overflowed, rescaled
+from eulerlib._quaternion_kernels import product
+from eulerlib._scalar_kernels import Nine
+from eulerlib._scalar_kernels import product as product_of_two
 from eulerlib._validation import (
     ROTATION_ATOL,
     RotationCheck,
@@ -85,14 +88,20 @@ def rotate_points(
            [-2.,  0.,  0.]])
     """
     check = rotation_check(validate, repair, atol)
+    kernels = _compiled.operations
+    if kernels is not None and not check.repair:
+        given_R, given_points = _compiled.batch(R, (3, 3)), _compiled.batch(points, (3,))
+        if given_R is not None and given_points is not None:  # one pass in C, or the paths below
+            lead = common_lead((given_R.shape[:-2], given_points.shape[:-1]))
+            if lead is not None:
+                out = np.empty((*lead, 3))
+                if kernels.rotate_points(out, given_R, given_points, check.validate, check.atol):
+                    return out
     one_R, one_point = _scalar.rotation(R, check), _scalar.vector(points)
     if one_R is not None and one_point is not None:  # one point: checked in Python floats
-        with np.errstate(over="ignore", invalid="ignore"):  # a huge point: the array path
-            turned, finite = _rotated(
-                _scalar.as_array(one_R, (3, 3)), _scalar.as_array(one_point, (3,))
-            )
-        if finite:
-            return turned
+        turned = _rotated_point(one_R, one_point)
+        if _scalar.finite(turned):  # a huge point: the array path rescales it
+            return _scalar.as_array(turned, (3,))
     # Finiteness is read from the result, in the same pass, where that is sound: with IEEE
     # arithmetic a NaN or an infinity among the operands of a product makes it NaN or infinite
     # (0 · ∞ is NaN), so the sum of the result shows it. einsum, over a stack of matrices,
@@ -152,23 +161,48 @@ def rotate_points(
     return rotated
 
 
+def _rotated_point(e: Nine, p: tuple[float, float, float]) -> tuple[float, float, float]:
+    """``R p`` for one matrix and one point in Python floats, as :func:`_rotated`."""
+    x, y, z = p
+    turned = [0.0, 0.0, 0.0]
+    for i in range(3):
+        total = e[3 * i] * x
+        total += e[3 * i + 1] * y
+        turned[i] = total + e[3 * i + 2] * z
+    return turned[0], turned[1], turned[2]
+
+
 def _rotated(
     matrices: NDArray[np.float64], vectors: NDArray[np.float64]
 ) -> tuple[NDArray[np.float64], bool]:
     """``R p`` for each point (rows of ``vectors``), broadcast over the leading axes, and
-    whether the whole result is finite (one sum, taken while each block is in the cache)."""
-    if matrices.ndim == 2:  # one rotation for all points: a BLAS product per block
-        flat = vectors.reshape(-1, 3)
-        out = np.empty(flat.shape)
+    whether the whole result is finite (one sum, taken while each block is in the cache).
+
+    Each coordinate is ``(r₀ x + r₁ y) + r₂ z`` in that order, element by element, so that one
+    point, many points and the compiled kernel give the same bits (a BLAS product may add in
+    another order, or fuse a multiply with an add, depending on the machine)."""
+    lead = np.broadcast_shapes(matrices.shape[:-2], vectors.shape[:-1])
+    out = np.empty((*lead, 3))
+    if matrices.ndim == 2:  # one rotation for all points: block by block, in the cache
+        flat, flat_out = vectors.reshape(-1, 3), out.reshape(-1, 3)
         total = 0.0
         for block in block_slices(flat.shape[0]):
-            part = out[block]
-            np.matmul(matrices, flat[block].T, out=part.T)
-            total += float(np.sum(part))
-        return out.reshape(vectors.shape), math.isfinite(total)
-    # a matrix per point: einsum's loop over three products beats matmul's set-up per matrix
-    rotated: NDArray[np.float64] = np.einsum("...ij,...j->...i", matrices, vectors)
-    return rotated, math.isfinite(float(np.sum(rotated)))
+            _rotate_into(matrices, flat[block], flat_out[block])
+            total += float(np.sum(flat_out[block]))
+        return out, math.isfinite(total)
+    _rotate_into(matrices, vectors, out)
+    return out, math.isfinite(float(np.sum(out)))
+
+
+def _rotate_into(
+    matrices: NDArray[np.float64], vectors: NDArray[np.float64], out: NDArray[np.float64]
+) -> None:
+    """Write ``R p`` into ``out``, broadcast, each coordinate ``(r₀ x + r₁ y) + r₂ z``."""
+    x, y, z = vectors[..., 0], vectors[..., 1], vectors[..., 2]
+    for i in range(3):
+        total = matrices[..., i, 0] * x
+        total += matrices[..., i, 1] * y
+        np.add(total, matrices[..., i, 2] * z, out=out[..., i])
 
 
 def invert(
@@ -198,6 +232,11 @@ def invert(
     True
     """
     check = rotation_check(validate, repair, atol)
+    kernels, given = _compiled.operations, _compiled.batch(R, (3, 3))
+    if kernels is not None and given is not None and not check.repair:  # one pass in C
+        out = np.empty(given.shape)
+        if kernels.invert(out, given, check.validate, check.atol):
+            return out
     single = _scalar.rotation(R, check)
     if single is not None:
         a, b, c, d, e, f, g, h, i = single
@@ -284,19 +323,51 @@ def compose(
     if not rotations:
         raise TypeError("compose() needs at least one rotation matrix")
     check = rotation_check(validate, repair, atol)
+    kernels = _compiled.operations
+    if kernels is not None and not check.repair:
+        given = [_compiled.batch(R, (3, 3)) for R in rotations]
+        shapes = tuple(g.shape[:-2] if g is not None else None for g in given)
+        if None not in shapes:  # one pass in C, or the paths below
+            lead = common_lead(shapes)  # type: ignore[arg-type]
+            if lead is not None:
+                out = np.empty((*lead, 3, 3))
+                if kernels.compose(out, check.validate, check.atol, *given):
+                    return out
     singles = [_scalar.rotation(R, check) for R in rotations]
-    if all(single is not None for single in singles):  # single matrices, checked in floats
-        factors = [_scalar.as_array(single, (3, 3)) for single in singles if single is not None]
-        product_of_singles: NDArray[np.float64] = reduce(np.matmul, factors)
-        return product_of_singles
+    chosen = [single for single in singles if single is not None]
+    if len(chosen) == len(singles):  # single matrices, checked in floats
+        running = chosen[0]
+        for single in chosen[1:]:
+            running = product_of_two(running, single)
+        return _scalar.as_array(running, (3, 3))
     matrices = [as_rotations(R, f"rotation {n + 1}", check) for n, R in enumerate(rotations)]
     try:
+        lead = np.broadcast_shapes(*(m.shape[:-2] for m in matrices))
         np.broadcast_shapes(*(m.shape for m in matrices))
     except ValueError:
-        shapes = ", ".join(str(m.shape) for m in matrices)
-        raise ValueError(f"the rotations do not broadcast together: shapes {shapes}") from None
-    product: NDArray[np.float64] = reduce(np.matmul, matrices)
-    return product.copy() if len(matrices) == 1 else product
+        listed = ", ".join(str(m.shape) for m in matrices)
+        raise ValueError(f"the rotations do not broadcast together: shapes {listed}") from None
+    if len(matrices) == 1:
+        copied: NDArray[np.float64] = matrices[0].copy()
+        return copied
+    # entry by entry, (a₀ b₀ + a₁ b₃) + a₂ b₆ and without negative zeros, as one pair in Python
+    # floats and the compiled kernel (a BLAS product may add in another order, or fuse a
+    # multiply with an add, depending on the machine)
+    work = lead or (1,)  # at least one axis, so that a row of entries is an array
+    result = np.empty((*work, 3, 3))
+    # rows of entries (9, ...) with the leading axes aligned on the right, as numpy broadcasts
+    entries = [
+        matrix_entries(m.reshape((1,) * (len(work) + 2 - m.ndim) + m.shape)) for m in matrices
+    ]
+    so_far = entries[0]
+    for n, factor in enumerate(entries[1:], start=2):
+        last = n == len(entries)
+        target = np.moveaxis(result.reshape(*work, 9), -1, 0) if last else np.empty((9, *work))
+        with np.errstate(over="ignore", invalid="ignore"):  # unchecked huge entries, as matmul
+            product(so_far, factor, target)
+        target += 0.0
+        so_far = target
+    return result.reshape(*lead, 3, 3)
 
 
 def is_rotation_matrix(R: ArrayLike, *, atol: float = ROTATION_ATOL) -> NDArray[np.bool_]:

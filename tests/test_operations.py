@@ -17,6 +17,22 @@ from eulerlib import (
 )
 
 
+def typed_product(A, B):
+    """``A B`` typed in entry by entry, ``c_ij = (a_i0 b_0j + a_i1 b_1j) + a_i2 b_2j``, with no
+    negative zeros: the order of additions compose promises on every machine (a BLAS ``@``
+    may add in another order or fuse a multiply with an add)."""
+    A, B = np.broadcast_arrays(np.asarray(A), np.asarray(B))
+    C = np.empty(A.shape)
+    for i in range(3):
+        for j in range(3):
+            C[..., i, j] = (
+                (A[..., i, 0] * B[..., 0, j] + A[..., i, 1] * B[..., 1, j])
+                + A[..., i, 2] * B[..., 2, j]
+                + 0.0
+            )
+    return C
+
+
 @pytest.fixture
 def matrices(rng):
     return Rotation.random(4, rng=rng).as_matrix()
@@ -96,7 +112,9 @@ def test_invert_undoes_a_rotation(rng, matrices):
 
 def test_compose_is_the_left_to_right_product(matrices):
     A, B, C, D = matrices
-    assert_array_equal(compose(A, B), A @ B)
+    assert_array_equal(compose(A, B), typed_product(A, B))
+    assert_array_equal(compose(matrices, B), typed_product(matrices, B))
+    assert_array_equal(compose(A, B, C, D), typed_product(typed_product(typed_product(A, B), C), D))
     assert_allclose(compose(A, B, C, D), A @ B @ C @ D, rtol=0, atol=1e-15)
     assert_allclose(
         compose(A, B), (Rotation.from_matrix(A) * Rotation.from_matrix(B)).as_matrix(), atol=2e-15
@@ -121,7 +139,11 @@ def test_compose_broadcasts(matrices):
     stack = matrices.reshape(2, 2, 3, 3)
     product = compose(stack, matrices[0])
     assert product.shape == (2, 2, 3, 3)
-    assert_array_equal(product, stack @ matrices[0])
+    assert_array_equal(product, typed_product(stack, matrices[0]))
+    assert compose(stack[:, :1], matrices[:2]).shape == (2, 2, 3, 3)
+    assert_array_equal(
+        compose(stack[:, :1], matrices[:2]), typed_product(stack[:, :1], matrices[:2])
+    )
     with pytest.raises(ValueError, match=r"do not broadcast.*\(4, 3, 3\).*\(3, 3, 3\)"):
         compose(matrices, matrices[:3])
 
