@@ -209,7 +209,10 @@ def _refuse_overflow(half_turn: NDArray[np.float64], shape: tuple[int, ...], off
     """
     if not half_turn.size or np.isfinite(np.max(np.abs(half_turn))):
         return
-    first = int(np.flatnonzero(np.isinf(half_turn))[0])
+    infinite = np.flatnonzero(np.isinf(half_turn))
+    if not infinite.size:  # NaN only: unchecked ends (validate=False) far from any rotation
+        return
+    first = int(infinite[0])
     raise ValueError(
         f"t{_index_text(shape, offset + first)} times the angle from R0 to R1 is above the "
         "largest float (about 1.8e308): the turn to make is not a number"

@@ -196,3 +196,18 @@ def test_the_path_is_made_of_rotations_and_runs_backwards_from_the_other_end(pai
     assert_allclose(R @ np.swapaxes(R, -1, -2), np.eye(3), rtol=0, atol=1e-14)
     if angle_between(R0, R1) < np.pi - 1e-6:  # a unique geodesic: the same path both ways
         assert_allclose(slerp(R1, R0, 1.0 - t), R, rtol=0, atol=1e-13)
+
+
+def test_unchecked_ends_far_from_rotations_give_nan_not_an_index_error() -> None:
+    """With ``validate=False`` nothing promises a rotation, but ends whose relative quaternion
+    overflows gave an IndexError from the search for an infinite ``t θ / 2``: they now give NaN,
+    as the other unchecked conversions do, and a ``t`` that overflows is still refused."""
+    A = np.eye(3)
+    A[0, 0] = 2.0**512
+    with np.errstate(all="ignore"):
+        result = slerp(A, A.copy(), 0.0, validate=False)
+        results = slerp(np.stack([np.eye(3), A]), np.stack([np.eye(3), A]), 0.5, validate=False)
+    assert result.shape == (3, 3) and np.isnan(result).any()
+    assert_array_equal(results[0], np.eye(3))
+    with pytest.raises(ValueError):
+        slerp(np.eye(3), rot_z(3.0), 1.7e308, validate=False)
