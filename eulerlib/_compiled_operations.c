@@ -175,19 +175,41 @@ rotate_points(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     double *e = out.buf;
     int ok = count_of(&out) == 3 * n && count_of(&R) == 9 * matrices &&
              count_of(&points) == 3 * vectors && (matrices == n || matrices == 1) &&
-             (vectors == n || vectors == 1) && all_finite(p, 3 * vectors) &&
-             all_rotations(r, matrices, validate, atol);
-    Py_ssize_t r_step = matrices == n ? 9 : 0, p_step = vectors == n ? 3 : 0;
-    for (Py_ssize_t m = 0; ok && m < n; m++) {
-        const double *a = r + r_step * m, *v = p + p_step * m;
-        double *x = e + 3 * m;
-        for (int i = 0; i < 3; i++) {
-            double total = a[3 * i] * v[0];
-            total += a[3 * i + 1] * v[1];
-            x[i] = total + a[3 * i + 2] * v[2];
+             (vectors == n || vectors == 1) && all_rotations(r, matrices, validate, atol);
+    /* A point that is not finite makes its rotated point not finite (a finite matrix turns an
+     * infinity into an infinity or a NaN, and a NaN stays one), so one test of the results, in
+     * the same pass, checks both; it collects flags, without a branch per point. */
+    int bad = 0;
+    if (ok && matrices == 1) { /* one matrix turning many points: its rows stay in registers */
+        double a0 = r[0], a1 = r[1], a2 = r[2], a3 = r[3], a4 = r[4], a5 = r[5], a6 = r[6],
+               a7 = r[7], a8 = r[8];
+        Py_ssize_t p_step = vectors == n ? 3 : 0;
+        for (Py_ssize_t m = 0; m < n; m++) {
+            const double *v = p + p_step * m;
+            double *x = e + 3 * m;
+            double t0 = a0 * v[0], t1 = a3 * v[0], t2 = a6 * v[0];
+            t0 += a1 * v[1];
+            t1 += a4 * v[1];
+            t2 += a7 * v[1];
+            x[0] = t0 + a2 * v[2];
+            x[1] = t1 + a5 * v[2];
+            x[2] = t2 + a8 * v[2];
+            bad |= !(x[0] - x[0] == 0.0) | !(x[1] - x[1] == 0.0) | !(x[2] - x[2] == 0.0);
         }
-        ok = all_finite(x, 3);
+    } else if (ok) {
+        Py_ssize_t p_step = vectors == n ? 3 : 0;
+        for (Py_ssize_t m = 0; m < n; m++) {
+            const double *a = r + 9 * m, *v = p + p_step * m;
+            double *x = e + 3 * m;
+            for (int i = 0; i < 3; i++) {
+                double total = a[3 * i] * v[0];
+                total += a[3 * i + 1] * v[1];
+                x[i] = total + a[3 * i + 2] * v[2];
+            }
+            bad |= !(x[0] - x[0] == 0.0) | !(x[1] - x[1] == 0.0) | !(x[2] - x[2] == 0.0);
+        }
     }
+    ok = ok && !bad;
     PyBuffer_Release(&points);
     PyBuffer_Release(&R);
     PyBuffer_Release(&out);
