@@ -15,7 +15,13 @@ import math
 import numpy as np
 from numpy.typing import NDArray
 
-from eulerlib._length_kernels import TINY, binary_exponents, lengths, squared_lengths
+from eulerlib._length_kernels import (
+    TINY,
+    binary_exponents,
+    lengths,
+    out_of_range,
+    squared_lengths,
+)
 
 Array = NDArray[np.float64]
 
@@ -75,8 +81,15 @@ def directions(v: Array) -> tuple[Array, Array]:
     """Unit vectors of the columns of ``v`` (shape ``(3, n)``) and their lengths, at any scale.
 
     The direction of a zero column is ``(1, 0, 0)``; whoever uses it multiplies it by a sine of
-    0, or documents the choice (the logarithm of a negative real number).
+    0, or documents the choice (the logarithm of a negative real number). Where every squared
+    length lies well inside float64's range, the columns are divided by their lengths at once;
+    otherwise each is first scaled by a power of two, exactly, so that nothing overflows or
+    underflows.
     """
+    squared = squared_lengths(v)
+    if not out_of_range(squared).size:  # the usual case: every length far from 0 and overflow
+        length: Array = np.sqrt(squared)
+        return v / length, length
     part, _ = scaled(v)
     unit: Array = part / np.maximum(np.sqrt(squared_lengths(part)), TINY)
     length = lengths(v)

@@ -505,6 +505,76 @@ matrices_to_axes(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     return PyBool_FromLong(ok);
 }
 
+/* vector_directions(unit, length, v) -> bool
+ * Stage 1 of the exponential of pure quaternions (_algebra_kernels.directions where every
+ * squared length is in range): for each vector (n, 3) its length and v / length; False when a
+ * squared length needs rescaling (the zero vector included) or is not finite. */
+static PyObject *
+vector_directions(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)module;
+    if (nargs != 3) {
+        PyErr_SetString(PyExc_TypeError, "vector_directions takes 3 arguments");
+        return NULL;
+    }
+    Py_buffer views[3];
+    if (take_buffers(args, 3, 2, views) < 0) {
+        return NULL;
+    }
+    double *unit = views[0].buf, *length = views[1].buf;
+    const double *v = views[2].buf;
+    Py_ssize_t n = count_of(&views[2]) / 3;
+    int ok = count_of(&views[0]) == 3 * n && count_of(&views[1]) == n;
+    for (Py_ssize_t m = 0; ok && m < n; m++) {
+        double squared = squared_length(v + 3 * m, 3);
+        ok = squared >= 0.0;
+        double size = sqrt(squared);
+        length[m] = size;
+        for (int i = 0; i < 3; i++) {
+            unit[3 * m + i] = v[3 * m + i] / size;
+        }
+    }
+    release_buffers(views, 3);
+    return PyBool_FromLong(ok);
+}
+
+/* pure_exponentials(out, unit, sines, cosines, scalar_first) -> bool
+ * Stage 2 (_algebra_kernels.exponentials of pure quaternions, stored as quaternion_exp
+ * writes them, without -0.0): (cos, sin · unit) for n vectors, given numpy's sine and cosine
+ * of their lengths. */
+static PyObject *
+pure_exponentials(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
+{
+    (void)module;
+    if (nargs != 5) {
+        PyErr_SetString(PyExc_TypeError, "pure_exponentials takes 5 arguments");
+        return NULL;
+    }
+    int first = PyObject_IsTrue(args[4]);
+    if (first < 0) {
+        return NULL;
+    }
+    Py_buffer views[4];
+    if (take_buffers(args, 4, 1, views) < 0) {
+        return NULL;
+    }
+    double *out = views[0].buf;
+    const double *unit = views[1].buf, *sines = views[2].buf, *cosines = views[3].buf;
+    Py_ssize_t n = count_of(&views[2]);
+    int ok = count_of(&views[0]) == 4 * n && count_of(&views[1]) == 3 * n &&
+             count_of(&views[3]) == n;
+    int w = first ? 0 : 3, x = first ? 1 : 0;
+    for (Py_ssize_t m = 0; ok && m < n; m++) {
+        double *q = out + 4 * m;
+        q[w] = cosines[m] + 0.0;
+        for (int i = 0; i < 3; i++) {
+            q[x + i] = unit[3 * m + i] * sines[m] + 0.0;
+        }
+    }
+    release_buffers(views, 4);
+    return PyBool_FromLong(ok);
+}
+
 static PyMethodDef methods[] = {
     {"quaternions_to_matrices", (PyCFunction)(void (*)(void))quaternions_to_matrices,
      METH_FASTCALL, NULL},
@@ -517,6 +587,8 @@ static PyMethodDef methods[] = {
     {"relative_angle_arguments", (PyCFunction)(void (*)(void))relative_angle_arguments, METH_FASTCALL, NULL},
     {"matrices_to_rotvecs", (PyCFunction)(void (*)(void))matrices_to_rotvecs, METH_FASTCALL, NULL},
     {"matrices_to_axes", (PyCFunction)(void (*)(void))matrices_to_axes, METH_FASTCALL, NULL},
+    {"vector_directions", (PyCFunction)(void (*)(void))vector_directions, METH_FASTCALL, NULL},
+    {"pure_exponentials", (PyCFunction)(void (*)(void))pure_exponentials, METH_FASTCALL, NULL},
     {NULL, NULL, 0, NULL},
 };
 

@@ -48,10 +48,12 @@ array([ 0.,  0., -1.,  0.])
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from eulerlib import _compiled
 from eulerlib._algebra_kernels import (
     Quad,
     exp_one,
@@ -328,6 +330,11 @@ def quaternion_exp(v: ArrayLike, *, scalar_first: bool = False) -> NDArray[np.fl
     array([0.54030231, 0.84147098, 0.        , 0.        ])
     """
     first = check_flag(scalar_first, "scalar_first")
+    kernels, given = _compiled.rotations, _compiled.batch(v, (3,))
+    if kernels is not None and given is not None and given.ndim > 1:  # one vector: below
+        out = _compiled_exponentials(kernels, given, first)
+        if out is not None:
+            return out
     values = as_float_array(v, "v")
     if values.ndim == 0 or values.shape[-1] not in (3, 4):
         raise ValueError(f"v must have shape (..., 3) or (..., 4), got shape {values.shape}")
@@ -348,6 +355,21 @@ def quaternion_exp(v: ArrayLike, *, scalar_first: bool = False) -> NDArray[np.fl
             rows = exponentials(parts[0], parts[1:])
         _write(out[block], rows, first)
     return out.reshape(*values.shape[:-1], 4)
+
+
+def _compiled_exponentials(kernels: Any, v: Array, first: bool) -> Array | None:
+    """The exponentials of a float64 batch of vectors in compiled kernels, around numpy's sine
+    and cosine, a block at a time; None where they do not take it (a length that needs
+    rescaling, a number that is not finite), for the array path."""
+    flat = v.reshape(-1, 3)
+    out = np.empty((flat.shape[0], 4))
+    for block in block_slices(flat.shape[0]):
+        part = flat[block]
+        unit, length = np.empty(part.shape), np.empty(part.shape[0])
+        if not kernels.vector_directions(unit, length, part):
+            return None
+        kernels.pure_exponentials(out[block], unit, np.sin(length), np.cos(length), first)
+    return out.reshape(*v.shape[:-1], 4)
 
 
 def quaternion_log(q: ArrayLike, *, scalar_first: bool = False) -> NDArray[np.float64]:

@@ -334,3 +334,22 @@ def test_generic_numbers() -> None:
         assert_same_warned(eulerlib.rotation_angle, R, degrees=degrees)
         assert_same_warned(eulerlib.angle_between, R, R[::-1].copy(), degrees=degrees)
         assert_same_warned(eulerlib.matrix_to_quaternion, R, scalar_first=degrees)
+
+
+@settings(max_examples=examples(200))
+@given(
+    shape=st.sampled_from([(1,), (3,), (2, 3), (17,)]),
+    data=st.data(),
+    first=st.booleans(),
+)
+def test_quaternion_exp(shape, data, first) -> None:
+    """Pure quaternions (vectors) of every scale: lengths that need rescaling and zero vectors
+    leave the kernels, NaN and infinity are refused alike."""
+    v = data.draw(arrays(np.float64, (*shape, 3), elements=scaled | st.just(np.inf)))
+    assert_same_outcome(eulerlib.quaternion_exp, v, scalar_first=first)
+
+
+def test_quaternion_exp_of_many_vectors_across_blocks() -> None:
+    v = np.random.default_rng(7).normal(size=(40_000, 3)) * np.array([1e-3, 1.0, 30.0])
+    assert_same_outcome(eulerlib.quaternion_exp, v)
+    assert_same_outcome(eulerlib.quaternion_exp, v, scalar_first=True)
