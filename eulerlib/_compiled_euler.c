@@ -605,19 +605,27 @@ elementary_matrices(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     int index = (int)axis, i = (index + 1) % 3, j = (index + 2) % 3;
     double *e = v[0].buf;
     const double *a = v[1].buf, *sines = v[2].buf, *cosines = v[3].buf;
+    /* where each entry goes: the turn's axis is index, the plane is spanned by i and j */
+    int zero0 = 3 * index + i, zero1 = 3 * index + j, zero2 = 3 * i + index, zero3 = 3 * j + index;
     for (Py_ssize_t m = 0; ok && m < n; m++) {
-        double three[3] = {a[m], 0.0, 0.0}, s3[3] = {sines[m], 0.0, 0.0};
-        double c3[3] = {cosines[m], 1.0, 1.0}, s[3], c[3];
-        turned(three, s3, c3, degrees, s, c);
-        double *r = e + 9 * m;
-        for (int p = 0; p < 9; p++) {
-            r[p] = 0.0;
+        double sine = sines[m], cosine = cosines[m];
+        if (degrees) {
+            double three[3] = {a[m], 0.0, 0.0}, s3[3] = {sine, 0.0, 0.0};
+            double c3[3] = {cosine, 1.0, 1.0}, s[3], c[3];
+            turned(three, s3, c3, degrees, s, c);
+            sine = s[0];
+            cosine = c[0];
         }
+        double *r = e + 9 * m;
         r[4 * index] = 1.0;
-        r[4 * i] = c[0];
-        r[4 * j] = c[0];
-        r[3 * i + j] = 0.0 - s[0];
-        r[3 * j + i] = s[0];
+        r[zero0] = 0.0;
+        r[zero1] = 0.0;
+        r[zero2] = 0.0;
+        r[zero3] = 0.0;
+        r[4 * i] = cosine;
+        r[4 * j] = cosine;
+        r[3 * i + j] = 0.0 - sine;
+        r[3 * j + i] = sine;
     }
     release_buffers(v, 4);
     return PyBool_FromLong(ok);
