@@ -256,25 +256,30 @@ def best_time(function: Callable[[], object], repeats: int) -> float:
     return min(times)
 
 
-def call_time(function: Callable[[], object], repeats: int) -> float:
-    """Shortest time of one call, in seconds: best of ``repeats`` runs of enough calls to fill
-    about 20 ms each."""
-    function()
-    calls, elapsed = 1, 0.0
-    while True:
-        start = time.perf_counter()
-        for _ in range(calls):
-            function()
-        elapsed = time.perf_counter() - start
-        if elapsed > 0.02:
-            break
-        calls *= 2 if elapsed > 0.002 else 10
-    best = elapsed / calls
-    for _ in range(repeats - 1):
-        start = time.perf_counter()
-        for _ in range(calls):
-            function()
-        best = min(best, (time.perf_counter() - start) / calls)
+def call_times(functions: list[Callable[[], object]], repeats: int) -> list[float]:
+    """The shortest time of one call of each function, in seconds: best of ``repeats`` runs of
+    enough calls to fill about 20 ms each, the functions' runs taken in turn (one run of each,
+    then the next round), so that a burst of other work on the machine falls on all of them
+    alike rather than on one side of a ratio."""
+    calls = []
+    for function in functions:  # warm up, and find how many calls fill about 20 ms
+        function()
+        count = 1
+        while True:
+            start = time.perf_counter()
+            for _ in range(count):
+                function()
+            if time.perf_counter() - start > 0.02:
+                break
+            count *= 10
+        calls.append(count)
+    best = [float("inf")] * len(functions)
+    for _ in range(repeats):
+        for n, (function, count) in enumerate(zip(functions, calls, strict=True)):
+            start = time.perf_counter()
+            for _ in range(count):
+                function()
+            best[n] = min(best[n], (time.perf_counter() - start) / count)
     return best
 
 
@@ -504,15 +509,16 @@ def one_call_table(seq: str, repeats: int, only: str) -> None:
     for row, (name, *_rest) in enumerate(by_size[1]):
         if only not in name:
             continue
-        line, single = "", 0.0
+        line, single, t3d = "", 0.0, f"{'':>8}"
         for k in ONE_CALL_SIZES:
-            _, ours, theirs, _ = by_size[k][row]
-            t_ours = call_time(ours, repeats)
+            _, ours, theirs, baseline = by_size[k][row]
+            timed = [ours, theirs] + ([baseline] if baseline is not None else [])
+            t_ours, t_theirs, *t_baseline = call_times(timed, repeats)
             if k == 1:
                 single = t_ours
-            line += f"{call_time(theirs, repeats) / t_ours:>8.2f}x"
-        baseline = by_size[1][row][3]
-        t3d = f"{call_time(baseline, repeats) / single:>7.2f}x" if baseline else f"{'':>8}"
+                if t_baseline:
+                    t3d = f"{t_baseline[0] / t_ours:>7.2f}x"
+            line += f"{t_theirs / t_ours:>8.2f}x"
         print(f"{name:<34}{single * 1e6:>8.1f} µs{line}{t3d}")
 
 
