@@ -43,7 +43,8 @@ count_of(const Py_buffer *view)
     return view->len / 8;
 }
 
-/* Whether every number is finite: x − x is 0 for a finite x and NaN otherwise (_scalar.finite). */
+/* Whether every number is finite: x − x is 0 for a finite x and NaN otherwise
+ * (_scalar.finite). */
 static inline int
 all_finite(const double *x, Py_ssize_t n)
 {
@@ -235,5 +236,8 @@ product(const double *a, const double *b, double *e)
         }
     }
 }
+
+/* The entry of a kernel `name` in its module's method table (called with METH_FASTCALL). */
+#define KERNEL(name) {#name, (PyCFunction)(void (*)(void))name, METH_FASTCALL, NULL}
 
 #endif

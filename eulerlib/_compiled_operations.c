@@ -483,14 +483,14 @@ integration_steps(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 }
 
 static PyMethodDef methods[] = {
-    {"invert", (PyCFunction)(void (*)(void))invert, METH_FASTCALL, NULL},
-    {"compose", (PyCFunction)(void (*)(void))compose, METH_FASTCALL, NULL},
-    {"rotate_points", (PyCFunction)(void (*)(void))rotate_points, METH_FASTCALL, NULL},
-    {"slerp_relative", (PyCFunction)(void (*)(void))slerp_relative, METH_FASTCALL, NULL},
-    {"slerp_half_turns", (PyCFunction)(void (*)(void))slerp_half_turns, METH_FASTCALL, NULL},
-    {"slerp_turn", (PyCFunction)(void (*)(void))slerp_turn, METH_FASTCALL, NULL},
-    {"integration_turns", (PyCFunction)(void (*)(void))integration_turns, METH_FASTCALL, NULL},
-    {"integration_steps", (PyCFunction)(void (*)(void))integration_steps, METH_FASTCALL, NULL},
+    KERNEL(invert),
+    KERNEL(compose),
+    KERNEL(rotate_points),
+    KERNEL(slerp_relative),
+    KERNEL(slerp_half_turns),
+    KERNEL(slerp_turn),
+    KERNEL(integration_turns),
+    KERNEL(integration_steps),
     {NULL, NULL, 0, NULL},
 };
 

@@ -576,19 +576,18 @@ pure_exponentials(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 }
 
 static PyMethodDef methods[] = {
-    {"quaternions_to_matrices", (PyCFunction)(void (*)(void))quaternions_to_matrices,
-     METH_FASTCALL, NULL},
-    {"matrices_to_quaternions", (PyCFunction)(void (*)(void))matrices_to_quaternions, METH_FASTCALL, NULL},
-    {"rotvec_half_angles", (PyCFunction)(void (*)(void))rotvec_half_angles, METH_FASTCALL, NULL},
-    {"rotvecs_to_matrices", (PyCFunction)(void (*)(void))rotvecs_to_matrices, METH_FASTCALL, NULL},
-    {"half_angles", (PyCFunction)(void (*)(void))half_angles, METH_FASTCALL, NULL},
-    {"axis_angles_to_matrices", (PyCFunction)(void (*)(void))axis_angles_to_matrices, METH_FASTCALL, NULL},
-    {"angle_arguments", (PyCFunction)(void (*)(void))angle_arguments, METH_FASTCALL, NULL},
-    {"relative_angle_arguments", (PyCFunction)(void (*)(void))relative_angle_arguments, METH_FASTCALL, NULL},
-    {"matrices_to_rotvecs", (PyCFunction)(void (*)(void))matrices_to_rotvecs, METH_FASTCALL, NULL},
-    {"matrices_to_axes", (PyCFunction)(void (*)(void))matrices_to_axes, METH_FASTCALL, NULL},
-    {"vector_directions", (PyCFunction)(void (*)(void))vector_directions, METH_FASTCALL, NULL},
-    {"pure_exponentials", (PyCFunction)(void (*)(void))pure_exponentials, METH_FASTCALL, NULL},
+    KERNEL(quaternions_to_matrices),
+    KERNEL(matrices_to_quaternions),
+    KERNEL(rotvec_half_angles),
+    KERNEL(rotvecs_to_matrices),
+    KERNEL(half_angles),
+    KERNEL(axis_angles_to_matrices),
+    KERNEL(angle_arguments),
+    KERNEL(relative_angle_arguments),
+    KERNEL(matrices_to_rotvecs),
+    KERNEL(matrices_to_axes),
+    KERNEL(vector_directions),
+    KERNEL(pure_exponentials),
     {NULL, NULL, 0, NULL},
 };
 
