@@ -37,6 +37,57 @@ doubles(PyObject *object, Py_buffer *view, int writable)
     return 0;
 }
 
+/* The buffers of a kernel's arguments args[0..count-1], the first `outputs` writable; 0 on
+ * success, -1 with an error set and every buffer taken so far released. */
+static inline int
+take_buffers(PyObject *const *args, Py_ssize_t count, Py_ssize_t outputs, Py_buffer *views)
+{
+    for (Py_ssize_t i = 0; i < count; i++) {
+        if (doubles(args[i], &views[i], i < outputs) < 0) {
+            while (i > 0) {
+                PyBuffer_Release(&views[--i]);
+            }
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* Releases the buffers take_buffers took. */
+static inline void
+release_buffers(Py_buffer *views, Py_ssize_t count)
+{
+    for (Py_ssize_t i = 0; i < count; i++) {
+        PyBuffer_Release(&views[i]);
+    }
+}
+
+/* 0 when a kernel got `expected` arguments, else -1 with a TypeError naming it. */
+static inline int
+argument_count(Py_ssize_t nargs, Py_ssize_t expected, const char *name)
+{
+    if (nargs != expected) {
+        PyErr_Format(PyExc_TypeError, "%s takes %zd arguments", name, expected);
+        return -1;
+    }
+    return 0;
+}
+
+/* Reads `validate` (a bool) and `atol` (a float) from two arguments; -1 with an error set. */
+static inline int
+rotation_check(PyObject *validate_object, PyObject *atol_object, int *validate, double *atol)
+{
+    *validate = PyObject_IsTrue(validate_object);
+    if (*validate < 0) {
+        return -1;
+    }
+    *atol = PyFloat_AsDouble(atol_object);
+    if (*atol == -1.0 && PyErr_Occurred()) {
+        return -1;
+    }
+    return 0;
+}
+
 static inline Py_ssize_t
 count_of(const Py_buffer *view)
 {

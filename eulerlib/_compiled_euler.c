@@ -38,40 +38,6 @@ frame_of(PyObject *object, Frame *f)
     return 0;
 }
 
-/* Opens `count` buffers of doubles, the first `writable` of them for writing; releases the
- * ones opened and returns -1 when one fails. */
-static int
-open_buffers(PyObject *const *args, Py_buffer *views, int count, int writable)
-{
-    for (int n = 0; n < count; n++) {
-        if (doubles(args[n], &views[n], n < writable) < 0) {
-            while (n-- > 0) {
-                PyBuffer_Release(&views[n]);
-            }
-            return -1;
-        }
-    }
-    return 0;
-}
-
-static void
-release_buffers(Py_buffer *views, int count)
-{
-    for (int n = 0; n < count; n++) {
-        PyBuffer_Release(&views[n]);
-    }
-}
-
-static int
-check_arguments(Py_ssize_t nargs, Py_ssize_t expected, const char *name)
-{
-    if (nargs != expected) {
-        PyErr_Format(PyExc_TypeError, "%s takes %zd arguments", name, expected);
-        return -1;
-    }
-    return 0;
-}
-
 /* The rest, in radians, of an angle in degrees after its quarter turns, and their number k
  * mod 4 (_scalar_kernels.quarter_turns; _trig.quarter_turns). */
 static inline double
@@ -91,7 +57,7 @@ static PyObject *
 angle_rests(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (check_arguments(nargs, 3, "angle_rests") < 0) {
+    if (argument_count(nargs, 3, "angle_rests") < 0) {
         return NULL;
     }
     int degrees = PyObject_IsTrue(args[2]);
@@ -197,7 +163,7 @@ static PyObject *
 angles_to_matrices(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (check_arguments(nargs, 6, "angles_to_matrices") < 0) {
+    if (argument_count(nargs, 6, "angles_to_matrices") < 0) {
         return NULL;
     }
     Frame f;
@@ -206,7 +172,7 @@ angles_to_matrices(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
         return NULL;
     }
     Py_buffer v[4];
-    if (open_buffers(args, v, 4, 1) < 0) {
+    if (take_buffers(args, 4, 1, v) < 0) {
         return NULL;
     }
     Py_ssize_t n = count_of(&v[1]) / 3;
@@ -314,7 +280,7 @@ static PyObject *
 matrices_to_pairs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (check_arguments(nargs, 5, "matrices_to_pairs") < 0) {
+    if (argument_count(nargs, 5, "matrices_to_pairs") < 0) {
         return NULL;
     }
     Frame f;
@@ -324,7 +290,7 @@ matrices_to_pairs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
         return NULL;
     }
     Py_buffer v[2];
-    if (open_buffers(args, v, 2, 1) < 0) {
+    if (take_buffers(args, 2, 1, v) < 0) {
         return NULL;
     }
     Py_ssize_t n = count_of(&v[1]) / 9;
@@ -346,7 +312,7 @@ static PyObject *
 quaternions_to_pairs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (check_arguments(nargs, 4, "quaternions_to_pairs") < 0) {
+    if (argument_count(nargs, 4, "quaternions_to_pairs") < 0) {
         return NULL;
     }
     Frame f;
@@ -355,7 +321,7 @@ quaternions_to_pairs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
         return NULL;
     }
     Py_buffer v[2];
-    if (open_buffers(args, v, 2, 1) < 0) {
+    if (take_buffers(args, 2, 1, v) < 0) {
         return NULL;
     }
     Py_ssize_t n = count_of(&v[1]) / 4;
@@ -382,7 +348,7 @@ static PyObject *
 angles_to_pairs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (check_arguments(nargs, 7, "angles_to_pairs") < 0) {
+    if (argument_count(nargs, 7, "angles_to_pairs") < 0) {
         return NULL;
     }
     Frame in, out;
@@ -391,7 +357,7 @@ angles_to_pairs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
         return NULL;
     }
     Py_buffer v[4];
-    if (open_buffers(args, v, 4, 1) < 0) {
+    if (take_buffers(args, 4, 1, v) < 0) {
         return NULL;
     }
     Py_ssize_t n = count_of(&v[1]) / 3;
@@ -420,7 +386,7 @@ static PyObject *
 pairs_to_angles(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (check_arguments(nargs, 5, "pairs_to_angles") < 0) {
+    if (argument_count(nargs, 5, "pairs_to_angles") < 0) {
         return NULL;
     }
     Frame f;
@@ -430,7 +396,7 @@ pairs_to_angles(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
         return NULL;
     }
     Py_buffer v[2];
-    if (open_buffers(args, v, 2, 1) < 0) {
+    if (take_buffers(args, 2, 1, v) < 0) {
         return NULL;
     }
     Py_ssize_t n = count_of(&v[1]) / 4;
@@ -468,7 +434,7 @@ static PyObject *
 half_angles(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (check_arguments(nargs, 3, "half_angles") < 0) {
+    if (argument_count(nargs, 3, "half_angles") < 0) {
         return NULL;
     }
     int degrees = PyObject_IsTrue(args[2]);
@@ -476,7 +442,7 @@ half_angles(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
         return NULL;
     }
     Py_buffer v[2];
-    if (open_buffers(args, v, 2, 1) < 0) {
+    if (take_buffers(args, 2, 1, v) < 0) {
         return NULL;
     }
     Py_ssize_t n = count_of(&v[1]);
@@ -529,7 +495,7 @@ static PyObject *
 angles_to_quaternions(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (check_arguments(nargs, 6, "angles_to_quaternions") < 0) {
+    if (argument_count(nargs, 6, "angles_to_quaternions") < 0) {
         return NULL;
     }
     /* (cos, sin) of k · 45° times √2 for odd k, by k mod 4 (_scalar_kernels._HALF_QUARTER) */
@@ -542,7 +508,7 @@ angles_to_quaternions(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
         return NULL;
     }
     Py_buffer v[3];
-    if (open_buffers(args, v, 3, 1) < 0) {
+    if (take_buffers(args, 3, 1, v) < 0) {
         return NULL;
     }
     Py_ssize_t n = count_of(&v[1]) / 3;
@@ -587,7 +553,7 @@ static PyObject *
 elementary_matrices(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (check_arguments(nargs, 6, "elementary_matrices") < 0) {
+    if (argument_count(nargs, 6, "elementary_matrices") < 0) {
         return NULL;
     }
     long axis = PyLong_AsLong(args[4]);
@@ -596,7 +562,7 @@ elementary_matrices(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
         return NULL;
     }
     Py_buffer v[4];
-    if (open_buffers(args, v, 4, 1) < 0) {
+    if (take_buffers(args, 4, 1, v) < 0) {
         return NULL;
     }
     Py_ssize_t n = count_of(&v[1]);

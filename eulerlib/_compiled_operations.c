@@ -8,21 +8,6 @@
 /* the most factors compose takes in one call; more are handed to the array path */
 #define MOST_FACTORS 32
 
-/* Reads `validate` (a bool) and `atol` (a float) from two arguments; -1 with an error set. */
-static int
-check_arguments(PyObject *validate_object, PyObject *atol_object, int *validate, double *atol)
-{
-    *validate = PyObject_IsTrue(validate_object);
-    if (*validate < 0) {
-        return -1;
-    }
-    *atol = PyFloat_AsDouble(atol_object);
-    if (*atol == -1.0 && PyErr_Occurred()) {
-        return -1;
-    }
-    return 0;
-}
-
 /* invert(out, R, validate, atol) -> bool
  * The transposes (n, 3, 3) of matrices (n, 3, 3), as invert's swapaxes; False when one is not
  * finite or, with validate, not a rotation within atol. */
@@ -30,13 +15,12 @@ static PyObject *
 invert(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 4) {
-        PyErr_SetString(PyExc_TypeError, "invert takes 4 arguments");
+    if (argument_count(nargs, 4, "invert") < 0) {
         return NULL;
     }
     int validate;
     double atol;
-    if (check_arguments(args[2], args[3], &validate, &atol) < 0) {
+    if (rotation_check(args[2], args[3], &validate, &atol) < 0) {
         return NULL;
     }
     Py_buffer out, R;
@@ -85,7 +69,7 @@ compose(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     }
     int validate;
     double atol;
-    if (check_arguments(args[1], args[2], &validate, &atol) < 0) {
+    if (rotation_check(args[1], args[2], &validate, &atol) < 0) {
         return NULL;
     }
     Py_buffer out, factor[MOST_FACTORS];
@@ -147,13 +131,12 @@ static PyObject *
 rotate_points(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 5) {
-        PyErr_SetString(PyExc_TypeError, "rotate_points takes 5 arguments");
+    if (argument_count(nargs, 5, "rotate_points") < 0) {
         return NULL;
     }
     int validate;
     double atol;
-    if (check_arguments(args[3], args[4], &validate, &atol) < 0) {
+    if (rotation_check(args[3], args[4], &validate, &atol) < 0) {
         return NULL;
     }
     Py_buffer out, R, points;
@@ -225,13 +208,12 @@ static PyObject *
 slerp_relative(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 6) {
-        PyErr_SetString(PyExc_TypeError, "slerp_relative takes 6 arguments");
+    if (argument_count(nargs, 6, "slerp_relative") < 0) {
         return NULL;
     }
     int validate;
     double atol;
-    if (check_arguments(args[4], args[5], &validate, &atol) < 0) {
+    if (rotation_check(args[4], args[5], &validate, &atol) < 0) {
         return NULL;
     }
     Py_buffer view[4];
@@ -278,8 +260,7 @@ static PyObject *
 slerp_half_turns(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 2) {
-        PyErr_SetString(PyExc_TypeError, "slerp_half_turns takes 2 arguments");
+    if (argument_count(nargs, 2, "slerp_half_turns") < 0) {
         return NULL;
     }
     Py_buffer angle, t;
@@ -312,8 +293,7 @@ static PyObject *
 slerp_turn(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 5) {
-        PyErr_SetString(PyExc_TypeError, "slerp_turn takes 5 arguments");
+    if (argument_count(nargs, 5, "slerp_turn") < 0) {
         return NULL;
     }
     Py_buffer view[5];
@@ -362,13 +342,12 @@ static PyObject *
 integration_turns(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 8) {
-        PyErr_SetString(PyExc_TypeError, "integration_turns takes 8 arguments");
+    if (argument_count(nargs, 8, "integration_turns") < 0) {
         return NULL;
     }
     int degrees = PyObject_IsTrue(args[5]), validate;
     double atol;
-    if (degrees < 0 || check_arguments(args[6], args[7], &validate, &atol) < 0) {
+    if (degrees < 0 || rotation_check(args[6], args[7], &validate, &atol) < 0) {
         return NULL;
     }
     Py_buffer view[5];
@@ -431,8 +410,7 @@ integration_steps(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     (void)module;
     /* (cos, sin) of k · 45° times √2 for odd k, by k mod 4 (_scalar_kernels._HALF_QUARTER) */
     static const double half_quarter[4][2] = {{1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}, {-1.0, 1.0}};
-    if (nargs != 6) {
-        PyErr_SetString(PyExc_TypeError, "integration_steps takes 6 arguments");
+    if (argument_count(nargs, 6, "integration_steps") < 0) {
         return NULL;
     }
     int degrees = PyObject_IsTrue(args[4]);

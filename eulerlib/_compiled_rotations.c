@@ -12,8 +12,7 @@ static PyObject *
 quaternions_to_matrices(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 3) {
-        PyErr_SetString(PyExc_TypeError, "quaternions_to_matrices takes 3 arguments");
+    if (argument_count(nargs, 3, "quaternions_to_matrices") < 0) {
         return NULL;
     }
     int first = PyObject_IsTrue(args[2]);
@@ -40,31 +39,6 @@ quaternions_to_matrices(PyObject *module, PyObject *const *args, Py_ssize_t narg
     PyBuffer_Release(&q);
     PyBuffer_Release(&out);
     return PyBool_FromLong(ok);
-}
-
-/* The buffers of a kernel's arguments args[0..count-1], the first `outputs` writable; 0 on
- * success, -1 with an error set and every buffer taken so far released. */
-static int
-take_buffers(PyObject *const *args, Py_ssize_t count, Py_ssize_t outputs, Py_buffer *views)
-{
-    for (Py_ssize_t i = 0; i < count; i++) {
-        if (doubles(args[i], &views[i], i < outputs) < 0) {
-            while (i > 0) {
-                PyBuffer_Release(&views[--i]);
-            }
-            return -1;
-        }
-    }
-    return 0;
-}
-
-/* Releases the buffers take_buffers took. */
-static void
-release_buffers(Py_buffer *views, Py_ssize_t count)
-{
-    for (Py_ssize_t i = 0; i < count; i++) {
-        PyBuffer_Release(&views[i]);
-    }
 }
 
 /* what math.radians multiplies by, the quotient rounded once */
@@ -116,8 +90,7 @@ static PyObject *
 matrices_to_quaternions(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 5) {
-        PyErr_SetString(PyExc_TypeError, "matrices_to_quaternions takes 5 arguments");
+    if (argument_count(nargs, 5, "matrices_to_quaternions") < 0) {
         return NULL;
     }
     int first = PyObject_IsTrue(args[2]), validate = PyObject_IsTrue(args[3]);
@@ -157,8 +130,7 @@ static PyObject *
 rotvec_half_angles(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 3) {
-        PyErr_SetString(PyExc_TypeError, "rotvec_half_angles takes 3 arguments");
+    if (argument_count(nargs, 3, "rotvec_half_angles") < 0) {
         return NULL;
     }
     int degrees = PyObject_IsTrue(args[2]);
@@ -189,8 +161,7 @@ static PyObject *
 rotvecs_to_matrices(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 4) {
-        PyErr_SetString(PyExc_TypeError, "rotvecs_to_matrices takes 4 arguments");
+    if (argument_count(nargs, 4, "rotvecs_to_matrices") < 0) {
         return NULL;
     }
     int degrees = PyObject_IsTrue(args[3]);
@@ -227,8 +198,7 @@ static PyObject *
 half_angles(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 3) {
-        PyErr_SetString(PyExc_TypeError, "half_angles takes 3 arguments");
+    if (argument_count(nargs, 3, "half_angles") < 0) {
         return NULL;
     }
     int degrees = PyObject_IsTrue(args[2]);
@@ -260,8 +230,7 @@ static PyObject *
 axis_angles_to_matrices(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 5) {
-        PyErr_SetString(PyExc_TypeError, "axis_angles_to_matrices takes 5 arguments");
+    if (argument_count(nargs, 5, "axis_angles_to_matrices") < 0) {
         return NULL;
     }
     int degrees = PyObject_IsTrue(args[4]);
@@ -355,8 +324,7 @@ static PyObject *
 angle_arguments(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 4) {
-        PyErr_SetString(PyExc_TypeError, "angle_arguments takes 4 arguments");
+    if (argument_count(nargs, 4, "angle_arguments") < 0) {
         return NULL;
     }
     int validate = PyObject_IsTrue(args[2]);
@@ -394,8 +362,7 @@ static PyObject *
 relative_angle_arguments(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 5) {
-        PyErr_SetString(PyExc_TypeError, "relative_angle_arguments takes 5 arguments");
+    if (argument_count(nargs, 5, "relative_angle_arguments") < 0) {
         return NULL;
     }
     int validate = PyObject_IsTrue(args[3]);
@@ -445,8 +412,7 @@ static PyObject *
 matrices_to_rotvecs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 3) {
-        PyErr_SetString(PyExc_TypeError, "matrices_to_rotvecs takes 3 arguments");
+    if (argument_count(nargs, 3, "matrices_to_rotvecs") < 0) {
         return NULL;
     }
     Py_buffer views[3];
@@ -479,8 +445,7 @@ static PyObject *
 matrices_to_axes(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 2) {
-        PyErr_SetString(PyExc_TypeError, "matrices_to_axes takes 2 arguments");
+    if (argument_count(nargs, 2, "matrices_to_axes") < 0) {
         return NULL;
     }
     Py_buffer views[2];
@@ -513,8 +478,7 @@ static PyObject *
 vector_directions(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 3) {
-        PyErr_SetString(PyExc_TypeError, "vector_directions takes 3 arguments");
+    if (argument_count(nargs, 3, "vector_directions") < 0) {
         return NULL;
     }
     Py_buffer views[3];
@@ -546,8 +510,7 @@ static PyObject *
 pure_exponentials(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    if (nargs != 5) {
-        PyErr_SetString(PyExc_TypeError, "pure_exponentials takes 5 arguments");
+    if (argument_count(nargs, 5, "pure_exponentials") < 0) {
         return NULL;
     }
     int first = PyObject_IsTrue(args[4]);
