@@ -288,6 +288,43 @@ product(const double *a, const double *b, double *e)
     }
 }
 
+/* An angle in degrees as k · 90° + r exactly: r in radians is returned, the whole number k
+ * goes to *quarter (_scalar_kernels.quarter_turns, whose k is float(round(...)): no −0.0). */
+static inline double
+quarter_turns(double angle, double *quarter)
+{
+    double reduced = fmod(angle, 360.0);
+    *quarter = nearbyint(reduced / 90.0) + 0.0;
+    return (reduced - 90.0 * *quarter) * (Py_MATH_PI / 180.0);
+}
+
+/* k mod 4, from 0 to 3, of a whole number k of quarter turns. */
+static inline int
+quarter_index(double quarter)
+{
+    int k = (int)fmod(quarter, 4.0);
+    return k < 0 ? k + 4 : k;
+}
+
+/* Positive multiples (a, b) of (cos(θ/2), sin(θ/2)) from t, numpy's tangent of half of θ in
+ * radians, or in degrees of half the rest r of θ = k · 90° + r (quarter_turns)
+ * (_scalar_kernels.half_angle_pair). */
+static inline void
+half_pair(double t, double quarter, int degrees, double *a, double *b)
+{
+    /* (cos, sin) of k · 45°, times √2 for odd k, by k mod 4 (_scalar_kernels._HALF_QUARTER) */
+    static const double half_quarter[4][2] = {{1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}, {-1.0, 1.0}};
+    if (!degrees) {
+        *a = 1.0;
+        *b = t;
+        return;
+    }
+    int k = quarter_index(quarter);
+    double c = half_quarter[k][0], s = half_quarter[k][1];
+    *a = c - s * t + 0.0;
+    *b = s + c * t + 0.0;
+}
+
 /* The entry of a kernel `name` in its module's method table (called with METH_FASTCALL). */
 #define KERNEL(name) {#name, (PyCFunction)(void (*)(void))name, METH_FASTCALL, NULL}
 

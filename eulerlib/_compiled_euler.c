@@ -39,15 +39,13 @@ frame_of(PyObject *object, Frame *f)
 }
 
 /* The rest, in radians, of an angle in degrees after its quarter turns, and their number k
- * mod 4 (_scalar_kernels.quarter_turns; _trig.quarter_turns). */
+ * mod 4 (quarter_turns). */
 static inline double
 quarter_rest(double angle, int *turn)
 {
-    double reduced = fmod(angle, 360.0);
-    double quarter = nearbyint(reduced / 90.0);
-    int k = (int)quarter % 4;
-    *turn = k < 0 ? k + 4 : k;
-    return (reduced - 90.0 * quarter) * (M_PI / 180.0);
+    double quarter, rest = quarter_turns(angle, &quarter);
+    *turn = quarter_index(quarter);
+    return rest;
 }
 
 /* angle_rests(out, angles, degrees) -> bool
@@ -498,9 +496,6 @@ angles_to_quaternions(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     if (argument_count(nargs, 6, "angles_to_quaternions") < 0) {
         return NULL;
     }
-    /* (cos, sin) of k · 45° times √2 for odd k, by k mod 4 (_scalar_kernels._HALF_QUARTER) */
-    static const double quarter_cos[4] = {1.0, 1.0, 0.0, -1.0};
-    static const double quarter_sin[4] = {0.0, 1.0, 1.0, 1.0};
     Frame f;
     int degrees = PyObject_IsTrue(args[4]);
     int first = PyObject_IsTrue(args[5]);
@@ -519,17 +514,11 @@ angles_to_quaternions(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
         double c[3], s[3], q[4];
         for (int p = 0; p < 3; p++) { /* intrinsic angle p is written angle w */
             int w = f.reversed ? 2 - p : p;
-            double tangent = t[3 * m + w];
-            if (!degrees) {
-                c[p] = 1.0;
-                s[p] = tangent;
-                continue;
+            double quarter = 0.0;
+            if (degrees) {
+                (void)quarter_turns(a[3 * m + w], &quarter);
             }
-            int turn;
-            (void)quarter_rest(a[3 * m + w], &turn);
-            double qc = quarter_cos[turn], qs = quarter_sin[turn];
-            c[p] = qc - qs * tangent + 0.0;
-            s[p] = qs + qc * tangent + 0.0;
+            half_pair(t[3 * m + w], quarter, degrees, &c[p], &s[p]);
         }
         quaternion_of(&f, c, s, q);
         double *row = out + 4 * m;

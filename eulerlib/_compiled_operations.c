@@ -383,11 +383,8 @@ integration_turns(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
         ok = squared >= 0.0;
         double length = ok ? sqrt(squared) : 0.0;
         v[3] = length;
-        if (degrees) { /* quarter_turns: length = k · 90° + r exactly */
-            double reduced = fmod(length, 360.0);
-            double quarter = nearbyint(reduced / 90.0);
-            v[4] = quarter;
-            half[m] = 0.5 * ((reduced - 90.0 * quarter) * (Py_MATH_PI / 180.0));
+        if (degrees) { /* length = k · 90° + r exactly */
+            half[m] = 0.5 * quarter_turns(length, &v[4]);
         } else {
             v[4] = 0.0;
             half[m] = 0.5 * length;
@@ -408,8 +405,6 @@ static PyObject *
 integration_steps(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
 {
     (void)module;
-    /* (cos, sin) of k · 45° times √2 for odd k, by k mod 4 (_scalar_kernels._HALF_QUARTER) */
-    static const double half_quarter[4][2] = {{1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}, {-1.0, 1.0}};
     if (argument_count(nargs, 6, "integration_steps") < 0) {
         return NULL;
     }
@@ -439,13 +434,8 @@ integration_steps(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     Py_ssize_t R_step = matrices == n ? 9 : 0;
     for (Py_ssize_t m = 0; ok && m < n; m++) {
         const double *v = turns + 5 * m;
-        double a = 1.0, b = tangent[m];
-        if (degrees) {
-            const double *pair = half_quarter[(int)fmod(v[4], 4.0)];
-            double c = pair[0], s = pair[1], t = b;
-            a = (c - s * t) + 0.0;
-            b = (s + c * t) + 0.0;
-        }
+        double a, b;
+        half_pair(tangent[m], v[4], degrees, &a, &b);
         double factor = b / v[3], step[9];
         ok = quaternion_to_entries(a, v[0] * factor, v[1] * factor, v[2] * factor, step);
         if (ok && in_space) {

@@ -41,12 +41,6 @@ quaternions_to_matrices(PyObject *module, PyObject *const *args, Py_ssize_t narg
     return PyBool_FromLong(ok);
 }
 
-/* what math.radians multiplies by, the quotient rounded once */
-static const double radians_per_degree = Py_MATH_PI / 180.0;
-
-/* (cos(θ/2), sin(θ/2)) multiples by the quarter turn k mod 4 (_scalar_kernels._HALF_QUARTER) */
-static const double half_quarter[4][2] = {{1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}, {-1.0, 1.0}};
-
 /* What numpy's tan takes for the half angle of `angle` (_scalar_kernels.half_angle_pair): θ/2,
  * or in degrees r/2 of angle = k·90° + r with r in radians (_scalar_kernels.quarter_turns);
  * k goes to *quarter (0 in radians). */
@@ -57,28 +51,7 @@ half_argument(double angle, int degrees, double *quarter)
     if (!degrees) {
         return 0.5 * angle;
     }
-    double reduced = fmod(angle, 360.0);
-    *quarter = nearbyint(reduced / 90.0) + 0.0; /* Python's float(round(x)): no −0.0 */
-    return 0.5 * ((reduced - 90.0 * *quarter) * radians_per_degree);
-}
-
-/* Positive multiples (a, b) of (cos(θ/2), sin(θ/2)) from t = tan of the half_argument
- * (_scalar_kernels.half_angle_pair). */
-static inline void
-half_pair(double t, double quarter, int degrees, double *a, double *b)
-{
-    if (!degrees) {
-        *a = 1.0;
-        *b = t;
-        return;
-    }
-    int turn = (int)fmod(quarter, 4.0);
-    if (turn < 0) {
-        turn += 4;
-    }
-    double c = half_quarter[turn][0], s = half_quarter[turn][1];
-    *a = c - s * t + 0.0;
-    *b = s + c * t + 0.0;
+    return 0.5 * quarter_turns(angle, quarter);
 }
 
 /* matrices_to_quaternions(out, R, scalar_first, validate, atol) -> bool
