@@ -282,9 +282,9 @@ matrices_to_pairs(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
         return NULL;
     }
     Frame f;
-    int validate = PyObject_IsTrue(args[3]);
-    double atol = PyFloat_AsDouble(args[4]);
-    if (validate < 0 || (atol == -1.0 && PyErr_Occurred()) || frame_of(args[2], &f) < 0) {
+    int validate;
+    double atol;
+    if (rotation_check(args[3], args[4], &validate, &atol) < 0 || frame_of(args[2], &f) < 0) {
         return NULL;
     }
     Py_buffer v[2];

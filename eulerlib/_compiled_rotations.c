@@ -66,9 +66,9 @@ matrices_to_quaternions(PyObject *module, PyObject *const *args, Py_ssize_t narg
     if (argument_count(nargs, 5, "matrices_to_quaternions") < 0) {
         return NULL;
     }
-    int first = PyObject_IsTrue(args[2]), validate = PyObject_IsTrue(args[3]);
-    double atol = PyFloat_AsDouble(args[4]);
-    if (first < 0 || validate < 0 || (atol == -1.0 && PyErr_Occurred())) {
+    int first = PyObject_IsTrue(args[2]), validate;
+    double atol;
+    if (first < 0 || rotation_check(args[3], args[4], &validate, &atol) < 0) {
         return NULL;
     }
     Py_buffer views[2];
@@ -300,9 +300,9 @@ angle_arguments(PyObject *module, PyObject *const *args, Py_ssize_t nargs)
     if (argument_count(nargs, 4, "angle_arguments") < 0) {
         return NULL;
     }
-    int validate = PyObject_IsTrue(args[2]);
-    double atol = PyFloat_AsDouble(args[3]);
-    if (validate < 0 || (atol == -1.0 && PyErr_Occurred())) {
+    int validate;
+    double atol;
+    if (rotation_check(args[2], args[3], &validate, &atol) < 0) {
         return NULL;
     }
     Py_buffer views[2];
@@ -338,9 +338,9 @@ relative_angle_arguments(PyObject *module, PyObject *const *args, Py_ssize_t nar
     if (argument_count(nargs, 5, "relative_angle_arguments") < 0) {
         return NULL;
     }
-    int validate = PyObject_IsTrue(args[3]);
-    double atol = PyFloat_AsDouble(args[4]);
-    if (validate < 0 || (atol == -1.0 && PyErr_Occurred())) {
+    int validate;
+    double atol;
+    if (rotation_check(args[3], args[4], &validate, &atol) < 0) {
         return NULL;
     }
     Py_buffer views[3];
