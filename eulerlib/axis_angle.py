@@ -43,6 +43,7 @@ nearby rotations. SciPy calls it ``rotvec``.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -152,21 +153,36 @@ def _compiled_axis_angle(axis: object, angle: object, degrees: bool) -> NDArray[
     return out if kernels.axis_angles_to_matrices(out, axes, angles, half, degrees) else None
 
 
+def _arctangents(
+    lead: tuple[int, ...], fill: Callable[[NDArray[np.float64], slice], bool]
+) -> NDArray[np.float64] | None:
+    """Angles of leading shape ``lead`` as numpy's arctan2 of the pairs that ``fill`` writes,
+    block by block, into rows ``(2, block)`` of y and x; None when ``fill`` declines."""
+    angles = np.empty(lead)  # written through out=: a 0-d array for one rotation
+    column = angles.reshape(-1)
+    scratch = np.empty(2 * min(column.size, BLOCK_SIZE))
+    for block in block_slices(column.size):
+        yx = scratch[: 2 * (block.stop - block.start)].reshape(2, -1)
+        if not fill(yx, block):
+            return None
+        np.arctan2(yx[0], yx[1], out=column[block])
+    return angles
+
+
 def _compiled_angles(R: object, check: RotationCheck) -> tuple[Any, NDArray[np.float64]] | None:
     """The matrices ``R`` as a float64 batch and their angles in radians, from the compiled
     kernels (C, numpy's arctan2), block by block; None where the kernels do not take them."""
     kernels, given = _compiled.rotations, _compiled.batch(R, (3, 3))
     if kernels is None or given is None or check.repair:
         return None
-    angles = np.empty(given.shape[:-2])  # written through out=: a 0-d array for one matrix
-    column, flat = angles.reshape(-1), given.reshape(-1, 3, 3)
-    scratch = np.empty(2 * min(column.size, BLOCK_SIZE))
-    for block in block_slices(column.size):
-        yx = scratch[: 2 * (block.stop - block.start)].reshape(2, -1)
-        if not kernels.angle_arguments(yx, flat[block], check.validate, check.atol):
-            return None
-        np.arctan2(yx[0], yx[1], out=column[block])
-    return given, angles
+    flat = given.reshape(-1, 3, 3)
+
+    def fill(yx: NDArray[np.float64], block: slice) -> bool:
+        done: bool = kernels.angle_arguments(yx, flat[block], check.validate, check.atol)
+        return done
+
+    angles = _arctangents(given.shape[:-2], fill)
+    return None if angles is None else (given, angles)
 
 
 def axis_angle_to_matrix(
@@ -559,18 +575,15 @@ def _compiled_relative_angles(
     lead0, lead1 = first.shape[:-2], second.shape[:-2]
     if lead0 != lead1 and lead0 and lead1:
         return None
-    angles = np.empty(lead0 or lead1)  # written through out=: a 0-d array for one pair
-    column = angles.reshape(-1)
     flat0, flat1 = first.reshape(-1, 3, 3), second.reshape(-1, 3, 3)
-    scratch = np.empty(2 * min(column.size, BLOCK_SIZE))
-    for block in block_slices(column.size):
-        yx = scratch[: 2 * (block.stop - block.start)].reshape(2, -1)
+
+    def fill(yx: NDArray[np.float64], block: slice) -> bool:
         on0 = flat0[block] if lead0 else flat0
         on1 = flat1[block] if lead1 else flat1
-        if not kernels.relative_angle_arguments(yx, on0, on1, check.validate, check.atol):
-            return None
-        np.arctan2(yx[0], yx[1], out=column[block])
-    return angles
+        done: bool = kernels.relative_angle_arguments(yx, on0, on1, check.validate, check.atol)
+        return done
+
+    return _arctangents(lead0 or lead1, fill)
 
 
 def angle_between(
